@@ -1,0 +1,159 @@
+#include "sscc/ccd/kernels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "contact_params.hpp"
+#include "exact/projected_decider.hpp"
+#include "filter/coplanar_filter.hpp"
+#include "separation/separation_search.hpp"
+
+namespace sscc::ccd {
+
+const char* to_string(DecidedBy stage) {
+  switch (stage) {
+    case DecidedBy::kSweptBoxes: return "swept-boxes";
+    case DecidedBy::kCoplanaritySign: return "coplanarity-sign";
+    case DecidedBy::kIntervalFilter: return "interval-filter";
+    case DecidedBy::kExact: return "exact";
+    case DecidedBy::kSeparationSearch: return "separation-search";
+  }
+  return "unknown";
+}
+
+namespace {
+
+/// Relative margin on the swept-box gap when a minimum separation inflates the boxes,
+/// covering the rounding of the gap's subtraction.
+constexpr double kBoxGapSlack = 1.0 + 1e-12;
+
+const char* name_of(PrimitivePair pair) {
+  return pair == PrimitivePair::kVertexFace ? "sscc::ccd::vertex_face_ccd"
+                                            : "sscc::ccd::edge_edge_ccd";
+}
+
+void check_input(const FourPointMotion& m, const CcdOptions& options) {
+  // std::isfinite, not arithmetic, so that no floating-point exception is raised.
+  const auto finite = [](const Eigen::Vector3d& x) {
+    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+  };
+  for (int i = 0; i < 4; ++i) {
+    if (!finite(m.t0[i]) || !finite(m.t1[i])) {
+      throw std::invalid_argument(std::string(name_of(m.pair)) +
+                                  ": non-finite coordinate (NaN or infinity) in the input");
+    }
+  }
+  if (!(options.minimum_separation >= 0.0) || !std::isfinite(options.minimum_separation)) {
+    throw std::invalid_argument(std::string(name_of(m.pair)) +
+                                ": minimum_separation must be finite and >= 0");
+  }
+  if (!(options.toi_tolerance > 0.0) || !std::isfinite(options.toi_tolerance)) {
+    throw std::invalid_argument(std::string(name_of(m.pair)) +
+                                ": toi_tolerance must be finite and > 0");
+  }
+}
+
+/// The points' first group (triangle, or edge a) against the second (vertex, or edge b).
+bool swept_boxes_disjoint(const FourPointMotion& m, double separation) {
+  const int split = m.pair == PrimitivePair::kVertexFace ? 3 : 2;
+  for (int k = 0; k < 3; ++k) {
+    double lo[2] = {INFINITY, INFINITY};
+    double hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < 4; ++i) {
+      const int g = i < split ? 0 : 1;
+      lo[g] = std::min({lo[g], m.t0[i][k], m.t1[i][k]});
+      hi[g] = std::max({hi[g], m.t0[i][k], m.t1[i][k]});
+    }
+    if (separation == 0.0) {
+      if (lo[1] > hi[0] || lo[0] > hi[1]) return true;
+    } else {
+      const double gap = std::max(lo[1] - hi[0], lo[0] - hi[1]);
+      if (gap > separation * kBoxGapSlack) return true;
+    }
+  }
+  return false;
+}
+
+double max_magnitude(const FourPointMotion& m) {
+  double r = 0.0;
+  for (int i = 0; i < 4; ++i) r = std::max({r, m.t0[i].cwiseAbs().maxCoeff(),
+                                             m.t1[i].cwiseAbs().maxCoeff()});
+  return r;
+}
+
+CcdResult decide(const FourPointMotion& motion, const CcdOptions& options) {
+  check_input(motion, options);
+  const double tolerance = std::max(options.toi_tolerance, kMinToiTolerance);
+  CcdResult result;
+  if (swept_boxes_disjoint(motion, options.minimum_separation)) return result;
+  if (options.minimum_separation > 0.0) {
+    return separation_search(motion, options.minimum_separation, tolerance);
+  }
+  if (max_magnitude(motion) <= filter::kFilterMaxMagnitude) {
+    const filter::FilterOutcome outcome = filter::run_coplanar_filter(motion, tolerance);
+    if (outcome.verdict != filter::Verdict::kUndecided) {
+      result.decided_by = outcome.stage;
+      result.hit = outcome.verdict == filter::Verdict::kContact;
+      result.toi = outcome.toi;
+    }
+    if (outcome.verdict == filter::Verdict::kNoContact) return result;
+  }
+  if (!result.hit) {
+    result.decided_by = DecidedBy::kExact;
+    std::optional<exact::RealRoot> first = exact_first_contact(motion);
+    if (!first) return result;
+    exact::refine(*first, mpq_class(tolerance) / 2);
+    result.hit = true;
+    result.toi = exact::round_down(first->lo);
+  }
+  contact_params_at(motion, result.toi, result.params);
+  return result;
+}
+
+}  // namespace
+
+CcdResult vertex_face_ccd(const Eigen::Vector3d& v_t0, const Eigen::Vector3d& f0_t0,
+                          const Eigen::Vector3d& f1_t0, const Eigen::Vector3d& f2_t0,
+                          const Eigen::Vector3d& v_t1, const Eigen::Vector3d& f0_t1,
+                          const Eigen::Vector3d& f1_t1, const Eigen::Vector3d& f2_t1,
+                          const CcdOptions& options) {
+  return decide({PrimitivePair::kVertexFace, {f0_t0, f1_t0, f2_t0, v_t0},
+                 {f0_t1, f1_t1, f2_t1, v_t1}},
+                options);
+}
+
+CcdResult edge_edge_ccd(const Eigen::Vector3d& ea0_t0, const Eigen::Vector3d& ea1_t0,
+                        const Eigen::Vector3d& eb0_t0, const Eigen::Vector3d& eb1_t0,
+                        const Eigen::Vector3d& ea0_t1, const Eigen::Vector3d& ea1_t1,
+                        const Eigen::Vector3d& eb0_t1, const Eigen::Vector3d& eb1_t1,
+                        const CcdOptions& options) {
+  return decide({PrimitivePair::kEdgeEdge, {ea0_t0, ea1_t0, eb0_t0, eb1_t0},
+                 {ea0_t1, ea1_t1, eb0_t1, eb1_t1}},
+                options);
+}
+
+bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                         const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
+                         const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {
+  // Two closed triangles meet iff an edge of one meets the other (the boundary of their
+  // convex intersection lies on their edges). An edge [p, q] meets a still triangle iff a
+  // vertex moving from p to q touches it: an exact vertex-face query.
+  const Eigen::Vector3d* a[3] = {&a0, &a1, &a2};
+  const Eigen::Vector3d* b[3] = {&b0, &b1, &b2};
+  for (int side = 0; side < 2; ++side) {
+    const Eigen::Vector3d* const* edge = side == 0 ? a : b;
+    const Eigen::Vector3d* const* tri = side == 0 ? b : a;
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d& p = *edge[i];
+      const Eigen::Vector3d& q = *edge[(i + 1) % 3];
+      if (vertex_face_ccd(p, *tri[0], *tri[1], *tri[2], q, *tri[0], *tri[1], *tri[2]).hit) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace sscc::ccd

@@ -1,0 +1,6 @@
+// The sscc library: continuous collision detection for deformable triangle meshes.
+// This umbrella header includes the public API.
+#pragma once
+
+#include "sscc/ccd/ccd_types.hpp"
+#include "sscc/ccd/kernels.hpp"
