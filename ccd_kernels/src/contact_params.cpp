@@ -100,7 +100,8 @@ void contact_params_at(const FourPointMotion& motion, double t, double params[2]
   if (magnitude > 0.0) {
     int exponent = 0;
     std::frexp(magnitude, &exponent);
-    for (int i = 1; i < 4; ++i) x[i] = x[i].unaryExpr([&](double v) { return std::ldexp(v, -exponent); });
+    const double scale = std::ldexp(1.0, -exponent);
+    for (int i = 1; i < 4; ++i) x[i] *= scale;
   }
   if (motion.pair == PrimitivePair::kVertexFace) {
     triangle_params(x[3], x[0], x[1], x[2], params);

@@ -34,64 +34,85 @@ const char* name_of(PrimitivePair pair) {
                                             : "sscc::ccd::edge_edge_ccd";
 }
 
-void check_input(const FourPointMotion& m, const CcdOptions& options) {
-  // std::isfinite, not arithmetic, so that no floating-point exception is raised.
-  const auto finite = [](const Eigen::Vector3d& x) {
-    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
-  };
-  for (int i = 0; i < 4; ++i) {
-    if (!finite(m.t0[i]) || !finite(m.t1[i])) {
-      throw std::invalid_argument(std::string(name_of(m.pair)) +
-                                  ": non-finite coordinate (NaN or infinity) in the input");
-    }
-  }
+void check_options(PrimitivePair pair, const CcdOptions& options) {
   if (!(options.minimum_separation >= 0.0) || !std::isfinite(options.minimum_separation)) {
-    throw std::invalid_argument(std::string(name_of(m.pair)) +
+    throw std::invalid_argument(std::string(name_of(pair)) +
                                 ": minimum_separation must be finite and >= 0");
   }
   if (!(options.toi_tolerance > 0.0) || !std::isfinite(options.toi_tolerance)) {
-    throw std::invalid_argument(std::string(name_of(m.pair)) +
+    throw std::invalid_argument(std::string(name_of(pair)) +
                                 ": toi_tolerance must be finite and > 0");
   }
 }
 
-/// The points' first group (triangle, or edge a) against the second (vertex, or edge b).
-bool swept_boxes_disjoint(const FourPointMotion& m, double separation) {
-  const int split = m.pair == PrimitivePair::kVertexFace ? 3 : 2;
-  for (int k = 0; k < 3; ++k) {
-    double lo[2] = {INFINITY, INFINITY};
-    double hi[2] = {-INFINITY, -INFINITY};
-    for (int i = 0; i < 4; ++i) {
-      const int g = i < split ? 0 : 1;
-      lo[g] = std::min({lo[g], m.t0[i][k], m.t1[i][k]});
-      hi[g] = std::max({hi[g], m.t0[i][k], m.t1[i][k]});
-    }
-    if (separation == 0.0) {
-      if (lo[1] > hi[0] || lo[0] > hi[1]) return true;
-    } else {
-      const double gap = std::max(lo[1] - hi[0], lo[0] - hi[1]);
-      if (gap > separation * kBoxGapSlack) return true;
+/// Per axis, the bounds over the whole step of the first group of points (the triangle, or
+/// edge a) and of the second (the vertex, or edge b).
+struct SweptBoxes {
+  double lo[2][3];
+  double hi[2][3];
+
+  explicit SweptBoxes(const FourPointMotion& m) {
+    const int split = m.pair == PrimitivePair::kVertexFace ? 3 : 2;
+    for (int k = 0; k < 3; ++k) {
+      for (int g = 0; g < 2; ++g) {
+        lo[g][k] = INFINITY;
+        hi[g][k] = -INFINITY;
+      }
+      for (int i = 0; i < 4; ++i) {
+        const int g = i < split ? 0 : 1;
+        const double a = m.t0[i][k];
+        const double b = m.t1[i][k];
+        lo[g][k] = std::min(lo[g][k], std::min(a, b));
+        hi[g][k] = std::max(hi[g][k], std::max(a, b));
+      }
     }
   }
-  return false;
-}
 
-double max_magnitude(const FourPointMotion& m) {
-  double r = 0.0;
-  for (int i = 0; i < 4; ++i) r = std::max({r, m.t0[i].cwiseAbs().maxCoeff(),
-                                             m.t1[i].cwiseAbs().maxCoeff()});
-  return r;
+  /// Whether the boxes, grown by `separation`, are disjoint.
+  bool disjoint(double separation) const {
+    bool apart = false;  // accumulated without branches: each axis is a coin flip
+    if (separation == 0.0) {
+      for (int k = 0; k < 3; ++k) apart |= (lo[1][k] > hi[0][k]) | (lo[0][k] > hi[1][k]);
+    } else {
+      for (int k = 0; k < 3; ++k) {
+        apart |= std::max(lo[1][k] - hi[0][k], lo[0][k] - hi[1][k]) > separation * kBoxGapSlack;
+      }
+    }
+    return apart;
+  }
+
+  double max_magnitude() const {
+    double r = 0.0;
+    for (int g = 0; g < 2; ++g) {
+      for (int k = 0; k < 3; ++k) r = std::max({r, -lo[g][k], hi[g][k]});
+    }
+    return r;
+  }
+};
+
+void check_finite(const FourPointMotion& m) {
+  // std::isfinite, not arithmetic, so that no floating-point exception is raised.
+  for (int i = 0; i < 4; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(m.t0[i][k]) || !std::isfinite(m.t1[i][k])) {
+        throw std::invalid_argument(std::string(name_of(m.pair)) +
+                                    ": non-finite coordinate (NaN or infinity) in the input");
+      }
+    }
+  }
 }
 
 CcdResult decide(const FourPointMotion& motion, const CcdOptions& options) {
-  check_input(motion, options);
+  check_options(motion.pair, options);
+  check_finite(motion);
   const double tolerance = std::max(options.toi_tolerance, kMinToiTolerance);
   CcdResult result;
-  if (swept_boxes_disjoint(motion, options.minimum_separation)) return result;
+  const SweptBoxes boxes(motion);
+  if (boxes.disjoint(options.minimum_separation)) return result;
   if (options.minimum_separation > 0.0) {
     return separation_search(motion, options.minimum_separation, tolerance);
   }
-  if (max_magnitude(motion) <= filter::kFilterMaxMagnitude) {
+  if (boxes.max_magnitude() <= filter::kFilterMaxMagnitude) {
     const filter::FilterOutcome outcome = filter::run_coplanar_filter(motion, tolerance);
     if (outcome.verdict != filter::Verdict::kUndecided) {
       result.decided_by = outcome.stage;

@@ -1,5 +1,5 @@
 // The floating-point stages of the kernels. Every verdict other than kUndecided is proven:
-// all signs it rests on are certified by the error bounds of Bounded arithmetic.
+// all signs it rests on are certified against proven rounding-error bounds.
 //
 // 1. The coplanarity cubic in Bernstein form on [0, 1]: a certain sign everywhere means
 //    the four points are never coplanar, so no contact.
@@ -10,6 +10,8 @@
 //    the cubic certainly changes sign across it and, in some plane, the orientations
 //    certainly put the projected point strictly inside (the plane's projection is then
 //    one-to-one on the common plane). Anything else is bisected, down to a minimum width.
+// Every sign is certified against an absolute rounding-error bound derived (in
+// coplanar_filter.cpp) from the magnitudes of the edge vectors.
 // 3. The time of impact is refined by bisection within the first contact piece.
 #pragma once
 

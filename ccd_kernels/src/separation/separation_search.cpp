@@ -5,13 +5,13 @@
 #include <queue>
 #include <vector>
 
-#include "filter/bounded.hpp"
+#include "separation/bounded.hpp"
 
 namespace sscc::ccd {
 
 namespace {
 
-using filter::Bounded;
+using separation::Bounded;
 using BVec3 = std::array<Bounded, 3>;
 
 /// Margin on the squared-distance comparison covering the rounding of the sums of squares.

@@ -14,7 +14,7 @@
 #include <cfloat>
 #include <cmath>
 
-namespace sscc::ccd::filter {
+namespace sscc::ccd::separation {
 
 inline constexpr double kUnitRoundoff = 0x1p-53;
 inline constexpr double kErrorSumSlack = 1.0 + 0x1p-48;
@@ -68,4 +68,4 @@ inline int certain_sign(const Bounded& a) {
   return 0;
 }
 
-}  // namespace sscc::ccd::filter
+}  // namespace sscc::ccd::separation
