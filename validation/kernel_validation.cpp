@@ -211,7 +211,7 @@ void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Qu
   std::vector<double> sampled;
   for (const Query& q : sample) {
     touching.push_back(run_kernel(q).hit);
-    sampled.push_back(sampled_min_distance(q, 24));
+    sampled.push_back(sampled_min_distance(q, 40));
   }
   for (double d : {1e-4, 1e-3, 1e-2, 3e-2, 1e-1}) {
     ccd::CcdOptions o;
@@ -236,6 +236,8 @@ void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Qu
                   d, sample.size(), positives, touch, confirmed, not_confirmed, us);
     out << line << '\n';
   }
+  toi.close();
+  sep.close();
   write_plots(options.output_dir, progress);
 }
 

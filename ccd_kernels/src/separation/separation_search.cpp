@@ -14,7 +14,7 @@ namespace {
 using separation::Bounded;
 using BVec3 = std::array<Bounded, 3>;
 
-/// Margin on the squared-distance comparison covering the rounding of the sums of squares.
+/// Margin on the distance comparisons covering the rounding of sums of squares and norms.
 constexpr double kSquaredDistanceSlack = 1.0 + 1e-12;
 
 struct Box {
@@ -62,43 +62,58 @@ struct Difference {
   }
 };
 
-struct Range {
-  double lo[3];
-  double hi[3];
-};
+/// F at the eight corners of a box, with error bounds.
+struct Corners {
+  Bounded f[8][3];
 
-Range corner_range(const Difference& f, const Box& box) {
-  Range r;
-  for (int k = 0; k < 3; ++k) {
-    r.lo[k] = std::numeric_limits<double>::infinity();
-    r.hi[k] = -std::numeric_limits<double>::infinity();
-  }
-  for (int corner = 0; corner < 8; ++corner) {
-    const double t = (corner & 1) ? box.hi[0] : box.lo[0];
-    const double u = (corner & 2) ? box.hi[1] : box.lo[1];
-    const double v = (corner & 4) ? box.hi[2] : box.lo[2];
-    for (int k = 0; k < 3; ++k) {
-      const Bounded x = f.at(k, t, u, v);
-      r.lo[k] = std::min(r.lo[k], x.value - x.error);
-      r.hi[k] = std::max(r.hi[k], x.value + x.error);
+  Corners(const Difference& diff, const Box& box) {
+    for (int corner = 0; corner < 8; ++corner) {
+      const double t = (corner & 1) ? box.hi[0] : box.lo[0];
+      const double u = (corner & 2) ? box.hi[1] : box.lo[1];
+      const double v = (corner & 4) ? box.hi[2] : box.lo[2];
+      for (int k = 0; k < 3; ++k) f[corner][k] = diff.at(k, t, u, v);
     }
   }
-  return r;
-}
+};
 
-bool certainly_farther(const Range& r, double d) {
+/// |F| > d on the whole box, proven two ways: per coordinate, F_k lies between its
+/// corner values; and along a direction n (the mean corner value), n . F is multilinear
+/// too, so |F| >= min over corners of n . F / |n|.
+bool certainly_farther(const Corners& c, double d) {
   double squared = 0.0;
+  double n[3] = {0.0, 0.0, 0.0};
   for (int k = 0; k < 3; ++k) {
-    const double gap = std::max({0.0, r.lo[k], -r.hi[k]});
+    double lo = INFINITY;
+    double hi = -INFINITY;
+    for (int corner = 0; corner < 8; ++corner) {
+      lo = std::min(lo, c.f[corner][k].value - c.f[corner][k].error);
+      hi = std::max(hi, c.f[corner][k].value + c.f[corner][k].error);
+      n[k] += 0.125 * c.f[corner][k].value;
+    }
+    const double gap = std::max({0.0, lo, -hi});
     squared += gap * gap;
   }
-  return !(squared <= d * d * kSquaredDistanceSlack);  // NaN bounds never exclude
+  if (squared > d * d * kSquaredDistanceSlack) return true;
+  const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(norm > 0.0)) return false;
+  double lowest = INFINITY;
+  for (int corner = 0; corner < 8; ++corner) {
+    Bounded along = Bounded::exact(0.0);
+    for (int k = 0; k < 3; ++k) along = along + Bounded::exact(n[k]) * c.f[corner][k];
+    lowest = std::min(lowest, along.value - along.error);
+  }
+  return lowest > d * norm * kSquaredDistanceSlack;  // NaN never excludes
 }
 
-double widest_extent(const Range& r) {
-  double w = 0.0;
-  for (int k = 0; k < 3; ++k) w = std::max(w, r.hi[k] - r.lo[k]);
-  return w;
+/// A corner at distance at most `reach` (in floating point), or -1.
+int corner_within(const Corners& c, double reach) {
+  for (int corner = 0; corner < 8; ++corner) {
+    const double squared = c.f[corner][0].value * c.f[corner][0].value +
+                           c.f[corner][1].value * c.f[corner][1].value +
+                           c.f[corner][2].value * c.f[corner][2].value;
+    if (squared <= reach * reach) return corner;
+  }
+  return -1;
 }
 
 }  // namespace
@@ -107,7 +122,7 @@ CcdResult separation_search(const FourPointMotion& motion, double minimum_separa
                             double toi_tolerance) {
   const Difference f(motion);
   const bool triangle_domain = motion.pair == PrimitivePair::kVertexFace;
-  const double accept_width = kSeparationRelativeTolerance * minimum_separation;
+  const double reach = (1.0 + kSeparationRelativeTolerance) * minimum_separation;
   std::priority_queue<Box, std::vector<Box>, EarlierFirst> queue;
   queue.push(Box{{0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}});
   CcdResult result;
@@ -121,14 +136,15 @@ CcdResult separation_search(const FourPointMotion& motion, double minimum_separa
     }
     queue.pop();
     if (triangle_domain && box.lo[1] + box.lo[2] > 1.0) continue;
-    const Range range = corner_range(f, box);
-    if (certainly_farther(range, minimum_separation)) continue;
+    const Corners corners(f, box);
+    if (certainly_farther(corners, minimum_separation)) continue;
     const bool t_narrow = box.hi[0] - box.lo[0] <= toi_tolerance;
-    if (t_narrow && widest_extent(range) <= accept_width) {
+    const int near = t_narrow ? corner_within(corners, reach) : -1;
+    if (near >= 0) {
       result.hit = true;
       result.toi = box.lo[0];
-      result.params[0] = 0.5 * (box.lo[1] + box.hi[1]);
-      result.params[1] = 0.5 * (box.lo[2] + box.hi[2]);
+      result.params[0] = (near & 2) ? box.hi[1] : box.lo[1];
+      result.params[1] = (near & 4) ? box.hi[2] : box.lo[2];
       return result;
     }
     int axis = t_narrow ? 1 : 0;

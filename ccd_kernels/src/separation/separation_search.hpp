@@ -10,7 +10,9 @@
 // F(t, u, v) = A(t) + u B(t) + v C(t), is multilinear in (t, u, v), so over a box of
 // parameters each coordinate of F lies between its values at the eight corners. Boxes are
 // taken earliest t first; a box is excluded when the corner bounds (with rounding-error
-// bounds) keep |F| above d, and accepted when what is left is narrower than the tolerances.
+// bounds) keep |F| above d, per coordinate or along the box's mean direction, and accepted
+// when it is narrower in t than the time-of-impact tolerance and one of its corners lies
+// within d (1 + kSeparationRelativeTolerance).
 #pragma once
 
 #include "four_point_motion.hpp"

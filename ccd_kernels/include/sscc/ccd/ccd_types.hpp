@@ -14,7 +14,8 @@ inline constexpr double kDefaultToiTolerance = 1e-6;
 inline constexpr double kMinToiTolerance = 0x1p-48;
 /// Relative width of the distance band in which the minimum-separation mode may report a
 /// contact that is not one (a false positive): distance in (d, d (1 + this)]. Smaller values
-/// cost more subdivision; zero would never terminate. It never causes a false negative.
+/// cost more subdivision; zero could exhaust the box budget. It never causes a false
+/// negative.
 inline constexpr double kSeparationRelativeTolerance = 1e-3;
 /// Upper bound on the subdivision boxes examined by the minimum-separation mode. When it
 /// is reached the answer is "contact" at the earliest time not excluded (conservative).
