@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 
 #include "agreement.hpp"
 #include "sscc/ccd/kernels.hpp"
@@ -100,4 +101,63 @@ TEST_CASE("bad input is refused with a message", "[kernels]") {
   options.toi_tolerance = 0.0;
   CHECK_THROWS_WITH(sscc::validation::run_kernel(cases.front().query, options),
                     Catch::Contains("toi_tolerance"));
+}
+
+TEST_CASE("huge and tiny edges together: underflow cannot fake a certain sign", "[kernels]") {
+  // A huge edge (2^300) with tiny ones (2^-525): products of the tiny coordinates are
+  // subnormal, and their rounding, multiplied by the huge edge, dwarfs a fixed underflow
+  // allowance. The primitives touch exactly (static, coplanar for all t).
+  std::mt19937_64 rng(3);
+  const double ints[3] = {3, 5, 7};
+  int contacts = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    double r[3];
+    for (double& x : r) x = 1.0 + std::ldexp(double(rng() >> 15), -49);
+    const Eigen::Vector3d zero(0, 0, 0);
+    const Eigen::Vector3d huge(std::ldexp(3.0, 300), std::ldexp(5.0, 300), std::ldexp(7.0, 300));
+    Eigen::Vector3d tiny, on_face, tiny_end;
+    for (int k = 0; k < 3; ++k) {
+      tiny[k] = std::ldexp(r[k], -525);
+      on_face[k] = std::ldexp(ints[k] + r[k], -526);  // 2^-826 huge + tiny / 2, exactly
+      tiny_end[k] = std::ldexp(ints[k] - r[k], -526);  // 2^-826 huge - tiny / 2, exactly
+    }
+    const Query vf{sscc::validation::Kind::kVertexFace,
+                   {on_face, zero, huge, tiny, on_face, zero, huge, tiny}};
+    const Query ee{sscc::validation::Kind::kEdgeEdge,
+                   {zero, huge, tiny, tiny_end, zero, huge, tiny, tiny_end}};
+    for (const Query& q : {vf, ee}) {
+      INFO(sscc::validation::describe(q));
+      CHECK(disagreement_with_reference(q) == "");
+      contacts += sscc::validation::run_kernel(q).hit ? 1 : 0;
+    }
+  }
+  CHECK(contacts == 400);
+}
+
+TEST_CASE("contact parameters on nearly parallel edges and needle triangles", "[kernels]") {
+  // Found by fuzzing at the smallest tolerance: closed-form closest points cancel here.
+  using V = Eigen::Vector3d;
+  using sscc::validation::Kind;
+  const std::vector<Query> queries = {
+      {Kind::kEdgeEdge,  // edges 2e-8 rad apart at contact
+       {V(-0x1.6p+1, -0x1.2p+1, 0x1.600004p+1), V(0x1.3p+1, 0x1.1p+2, 0x1.6p+0),
+        V(0x1.3p+3, 0x1.58p+2, -0x1.8p-1), V(0x1.ep+0, 0x1.ap+1, 0x1.ep+1),
+        V(-0x1.2fffffffp+2, -0x1p-2, 0x1.3p+2), V(0x1.bp+1, 0x1.2p+1, 0x1.3p+1),
+        V(0x1.ep+2, 0x1.98p+2, 0x1.4p+0), V(0x1.cp-1, 0x1.4p+0, 0x1.cp+0)}},
+      {Kind::kEdgeEdge,  // collinear edges meeting end to end
+       {V(0x1p+2, 0x1.8p+1, 0x1p+0), V(0x1.cp+0, 0x1p+0, 0x1.4p+0), V(0x1.8p+2, 0x1.4p+2, 0x1p+0),
+        V(0x1p+2, 0x1.8p+1, 0x1.4p+0), V(0x1p+2, 0x1.8p+1, 0x1p+0), V(0x1.ep+1, 0x1p+0, -0x1.8p-1),
+        V(0x1.8p+2, 0x1.4p+2, 0x1p+0), V(0x1.fffffffffffffp+1, 0x1.7ffffffffffffp+1, -0x1.8p-1)}},
+      {Kind::kVertexFace,  // a needle triangle, two vertices 4e-10 apart
+       {V(-0x1p-1, -0x1.4p+0, 0x1.ap+0), V(-0x1.dp+1, -0x1.4p-1, -0x1p-2),
+        V(0x1.2p+1, -0x1.6p+0, 0x1.8p-1), V(0x1.000000000004p+0, -0x1p+1, 0x1p+1),
+        V(-0x1p-1, -0x1.4p+0, 0x1.a0000002p+0), V(-0x1.5p+1, 0x1.8p-2, 0x1.cp+0),
+        V(0x1p-2, -0x1.3p+1, 0x1.6p+1), V(0x1p+0, -0x1p+1, 0x1p+1)}}};
+  sscc::ccd::CcdOptions options;
+  options.toi_tolerance = sscc::ccd::kMinToiTolerance;
+  for (const Query& q : queries) {
+    INFO(sscc::validation::describe(q));
+    CHECK(sscc::validation::run_kernel(q, options).hit);
+    CHECK(disagreement_with_reference(q, options) == "");
+  }
 }

@@ -225,8 +225,7 @@ void refine(RealRoot& root, const mpq_class& width) {
 int sign_at_root(const Polynomial& g, RealRoot& root) {
   if (g.is_zero()) return 0;
   if (root.is_exact()) return g.sign_at(root.lo);
-  // A common factor of g and the root's square-free polynomial has only simple roots, and
-  // the root is the only one of them in (lo, hi): it vanishes there iff it changes sign.
+  // g without a root in (lo, hi] has the sign it has at hi.
   const SturmSequence sturm(squarefree_part(g));
   if (sturm.count_roots(root.lo, root.hi) == 0) return g.sign_at(root.hi);
   // A common factor of g and the root's square-free polynomial has only simple roots, and

@@ -17,7 +17,7 @@ namespace sscc::ccd::filter {
 //   (c01 + c10) / 2 adds one rounding of a value <= 2 M_x M_y: 10.1u M_x M_y. Magnitudes
 //   <= 2 M_x M_y.
 // - an orientation (K12 + K23 - K13, or one K): with S = M1 M2 + M1 M3 + M2 M3, at most
-//   3 x 10.1u S + two roundings of values <= 2 S: 14.2u S; magnitudes <= 2 S.
+//   10.1u S + two roundings of values <= 2 S: 14.2u S; magnitudes <= 2 S.
 // - the cubic's Bernstein coefficients e1 . (e2 x e3) (with the mixed cross products summed
 //   and divided by 3): at most 65u P with P = M1 M2 M3; magnitudes <= 6 P.
 // - a bisection (de Casteljau at 1/2) averages coefficients (errors do not grow) and
@@ -27,8 +27,13 @@ namespace sscc::ccd::filter {
 //   At bisection depth d: orientations 14.2u S + 4d u S, taken as (16 + 4d) u S; the cubic
 //   65u P + 18d u P, taken as (72 + 20d) u P. Depth stays below 64 (pieces are dyadic, no
 //   narrower than kMinToiTolerance), so nothing is evaluated outside that range.
-// Underflow adds at most 2^-1075 per operation: a few thousand operations stay far below
-// kUnderflowAllowance.
+// Underflow adds at most 2^-1075 per operation. An orientation is a sum of products of two
+// inputs, so a few thousand such errors stay far below kUnderflowAllowance. The cubic
+// multiplies cross products (whose products may underflow) by components of e1, which can
+// be huge while e2, e3 are tiny: its allowance is scaled by 1 + M1 + M2 + M3.
+// - certainly_monotone compares differences of neighbouring cubic coefficients: each has
+//   twice the coefficients' error plus its own rounding (u 12 P), which the slack between
+//   the derived 62.3u P and the 72u P used covers.
 
 namespace {
 
@@ -43,8 +48,9 @@ class ErrorBounds {
  public:
   ErrorBounds(double m1, double m2, double m3)
       : cubic_unit_(kUnitRoundoff * (m1 * m2 * m3)),
-        orientation_unit_(kUnitRoundoff * (m1 * m2 + m1 * m3 + m2 * m3)) {}
-  double cubic(int depth) const { return (72.0 + 20.0 * depth) * cubic_unit_ + kUnderflowAllowance; }
+        orientation_unit_(kUnitRoundoff * (m1 * m2 + m1 * m3 + m2 * m3)),
+        cubic_underflow_(kUnderflowAllowance * (1.0 + m1 + m2 + m3)) {}
+  double cubic(int depth) const { return (72.0 + 20.0 * depth) * cubic_unit_ + cubic_underflow_; }
   double orientation(int depth) const {
     return (16.0 + 4.0 * depth) * orientation_unit_ + kUnderflowAllowance;
   }
@@ -52,6 +58,7 @@ class ErrorBounds {
  private:
   double cubic_unit_;
   double orientation_unit_;
+  double cubic_underflow_;
 };
 
 using Vec3 = std::array<double, 3>;
@@ -197,7 +204,8 @@ bool refine_first_root(Cubic f, double t0, double t1, int depth, double toleranc
     if (certainly_monotone(f, bounds.cubic(depth))) {
       const double width = t1 - t0;
       const double guess = guess_root(f);
-      const double half_band = 0.45 * tolerance / width;
+      // The band [before, after] and the roundings of toi below stay inside the tolerance.
+      const double half_band = (0.5 * tolerance - 0x1p-50) / width;
       const double before = std::max(0.0, guess - half_band);
       const double after = std::min(1.0, guess + half_band);
       const double error = bounds.cubic(depth + 4);
