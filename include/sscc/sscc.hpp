@@ -4,3 +4,5 @@
 
 #include "sscc/ccd/ccd_types.hpp"
 #include "sscc/ccd/kernels.hpp"
+#include "sscc/mesh/mesh_io.hpp"
+#include "sscc/mesh/triangle_mesh.hpp"

@@ -1,0 +1,90 @@
+#include "sscc/mesh/mesh_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <map>
+
+#include <Eigen/Geometry>
+
+#include "mesh/mesh_parsing.hpp"
+
+namespace sscc {
+
+MeshFileError::MeshFileError(const std::string& file, int line, const std::string& problem)
+    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
+                         problem) {}
+
+std::string MeshReadReport::summary() const {
+  const auto count = [](std::size_t n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  return count(polygons_triangulated, "polygon") + " triangulated, " +
+         count(zero_area_triangles.size(), "zero-area triangle") + ", " +
+         count(duplicate_triangles.size(), "duplicate triangle");
+}
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+}  // namespace
+
+TriangleMesh read_mesh(const std::string& path, MeshReadReport* report) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MeshFileError(path, 0, "cannot open the file");
+  mesh_parsing::LineReader reader(in, path);
+  const std::string ext = lower_extension(path);
+  mesh_parsing::RawMesh raw;
+  if (ext == "off") {
+    raw = mesh_parsing::read_off(reader);
+  } else if (ext == "obj") {
+    raw = mesh_parsing::read_obj(reader);
+  } else if (ext == "ply") {
+    raw = mesh_parsing::read_ply(reader);
+  } else {
+    throw MeshFileError(path, 0, "unknown mesh format '." + ext + "' (expected .off, .obj or .ply)");
+  }
+  MeshReadReport local;
+  MeshReadReport& r = report ? *report : local;
+  r = {};
+  std::vector<Triangle> triangles;
+  const int n = static_cast<int>(raw.vertices.size());
+  for (std::size_t f = 0; f < raw.faces.size(); ++f) {
+    const std::vector<int>& face = raw.faces[f];
+    for (int v : face) {
+      if (v < 0 || v >= n) {
+        throw MeshFileError(path, raw.face_lines[f], "vertex index " + std::to_string(v) +
+                                                         " outside [0, " + std::to_string(n) + ")");
+      }
+    }
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      for (std::size_t j = i + 1; j < face.size(); ++j) {
+        if (face[i] == face[j]) throw MeshFileError(path, raw.face_lines[f], "a face repeats a vertex");
+      }
+    }
+    if (face.size() > 3) ++r.polygons_triangulated;
+    for (std::size_t i = 1; i + 1 < face.size(); ++i) triangles.push_back({face[0], face[i], face[i + 1]});
+  }
+  if (triangles.empty()) throw MeshFileError(path, 0, "no faces: not a surface mesh");
+  std::map<std::array<int, 3>, int> seen;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    const Triangle& tri = triangles[t];
+    const Eigen::Vector3d& a = raw.vertices[tri[0]];
+    if ((raw.vertices[tri[1]] - a).cross(raw.vertices[tri[2]] - a).squaredNorm() == 0.0) {
+      r.zero_area_triangles.push_back(t);
+    }
+    std::array<int, 3> key = tri;
+    std::sort(key.begin(), key.end());
+    const auto [it, inserted] = seen.emplace(key, t);
+    if (!inserted) r.duplicate_triangles.push_back({it->second, t});
+  }
+  return TriangleMesh(std::move(raw.vertices), std::move(triangles));
+}
+
+}  // namespace sscc

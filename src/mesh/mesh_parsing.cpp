@@ -1,0 +1,55 @@
+#include "mesh/mesh_parsing.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace sscc::mesh_parsing {
+
+bool LineReader::next(std::string& line, char comment) {
+  while (std::getline(in_, line)) {
+    ++line_;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    if (comment != 0 && line[first] == comment) continue;
+    return true;
+  }
+  return false;
+}
+
+void LineReader::fail(const std::string& problem) const {
+  throw MeshFileError(file_, line_, problem);
+}
+
+double parse_coordinate(const std::string& token, const LineReader& reader) {
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(token.c_str(), &end);
+  if (end == token.c_str() || *end != '\0') reader.fail("'" + token + "' is not a number");
+  if (!std::isfinite(value) || errno == ERANGE) {
+    reader.fail("coordinate '" + token + "' is not a finite double");
+  }
+  return value;
+}
+
+long parse_integer(const std::string& token, const LineReader& reader) {
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(token.c_str(), &end, 10);
+  if (end == token.c_str() || *end != '\0' || errno == ERANGE) {
+    reader.fail("'" + token + "' is not an integer");
+  }
+  return value;
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> tokens;
+  std::string token;
+  while (in >> token) tokens.push_back(token);
+  return tokens;
+}
+
+}  // namespace sscc::mesh_parsing

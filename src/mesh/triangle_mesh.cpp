@@ -1,0 +1,89 @@
+#include "sscc/mesh/triangle_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sscc {
+
+TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Triangle> triangles)
+    : vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+  const int n = vertex_count();
+  for (int v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(vertices_[v][k])) {
+        throw std::invalid_argument("TriangleMesh: vertex " + std::to_string(v) +
+                                    " has a non-finite coordinate");
+      }
+    }
+  }
+  std::vector<std::pair<Edge, int>> half_edges;  // (edge, triangle * 3 + slot)
+  half_edges.reserve(3 * triangles_.size());
+  for (int t = 0; t < triangle_count(); ++t) {
+    const Triangle& tri = triangles_[t];
+    for (int k = 0; k < 3; ++k) {
+      if (tri[k] < 0 || tri[k] >= n) {
+        throw std::invalid_argument("TriangleMesh: triangle " + std::to_string(t) +
+                                    " has vertex index " + std::to_string(tri[k]) +
+                                    " outside [0, " + std::to_string(n) + ")");
+      }
+    }
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) {
+      throw std::invalid_argument("TriangleMesh: triangle " + std::to_string(t) +
+                                  " repeats a vertex");
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int a = tri[k];
+      const int b = tri[(k + 1) % 3];
+      half_edges.push_back({{std::min(a, b), std::max(a, b)}, 3 * t + k});
+    }
+  }
+  std::sort(half_edges.begin(), half_edges.end());
+  triangle_edges_.resize(triangles_.size());
+  for (std::size_t i = 0; i < half_edges.size(); ++i) {
+    if (i == 0 || half_edges[i].first != half_edges[i - 1].first) edges_.push_back(half_edges[i].first);
+    const int slot = half_edges[i].second;
+    triangle_edges_[slot / 3][slot % 3] = static_cast<int>(edges_.size()) - 1;
+  }
+  vertex_triangle_offsets_.assign(n + 1, 0);
+  for (const Triangle& tri : triangles_) {
+    for (int v : tri) ++vertex_triangle_offsets_[v + 1];
+  }
+  for (int v = 0; v < n; ++v) vertex_triangle_offsets_[v + 1] += vertex_triangle_offsets_[v];
+  vertex_triangles_.resize(3 * triangles_.size());
+  std::vector<int> fill(vertex_triangle_offsets_.begin(), vertex_triangle_offsets_.end() - 1);
+  for (int t = 0; t < triangle_count(); ++t) {
+    for (int v : triangles_[t]) vertex_triangles_[fill[v]++] = t;
+  }
+}
+
+const int* TriangleMesh::triangles_of_vertex_begin(int v) const {
+  return vertex_triangles_.data() + vertex_triangle_offsets_[v];
+}
+
+const int* TriangleMesh::triangles_of_vertex_end(int v) const {
+  return vertex_triangles_.data() + vertex_triangle_offsets_[v + 1];
+}
+
+bool TriangleMesh::adjacent(int a, int b) const {
+  const Triangle& x = triangles_[a];
+  const Triangle& y = triangles_[b];
+  for (int i : x) {
+    if (i == y[0] || i == y[1] || i == y[2]) return true;
+  }
+  return false;
+}
+
+double TriangleMesh::bounding_box_diagonal() const {
+  if (vertices_.empty()) return 0.0;
+  Eigen::Vector3d lo = vertices_[0];
+  Eigen::Vector3d hi = vertices_[0];
+  for (const auto& v : vertices_) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  return (hi - lo).norm();
+}
+
+}  // namespace sscc

@@ -1,0 +1,181 @@
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "sscc/mesh/mesh_io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Writes `content` to a file with the given name in a fresh scratch folder.
+std::string scratch_file(const std::string& name, const std::string& content) {
+  const fs::path dir = fs::temp_directory_path() / "sscc-test-mesh";
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path, std::ios::binary) << content;
+  return path.string();
+}
+
+const char* kCubeOff =
+    "OFF\n"
+    "# a unit cube with quad faces\n"
+    "8 6 0\n"
+    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+    "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+
+}  // namespace
+
+TEST_CASE("OFF: a quad cube is triangulated, with its connectivity", "[mesh]") {
+  sscc::MeshReadReport report;
+  const sscc::TriangleMesh mesh = sscc::read_mesh(scratch_file("cube.off", kCubeOff), &report);
+  CHECK(mesh.vertex_count() == 8);
+  CHECK(mesh.triangle_count() == 12);
+  CHECK(report.polygons_triangulated == 6);
+  CHECK(report.zero_area_triangles.empty());
+  CHECK(report.duplicate_triangles.empty());
+  CHECK(mesh.edges().size() == 18);  // 12 cube edges and 6 face diagonals
+  // Euler: V - E + F = 2 for a closed genus-0 surface.
+  CHECK(mesh.vertex_count() - static_cast<int>(mesh.edges().size()) + mesh.triangle_count() == 2);
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const sscc::Edge& e = mesh.edges()[mesh.triangle_edges(t)[k]];
+      const int a = mesh.triangles()[t][k];
+      const int b = mesh.triangles()[t][(k + 1) % 3];
+      CHECK(e == sscc::Edge{std::min(a, b), std::max(a, b)});
+    }
+  }
+  int incident = 0;
+  for (int v = 0; v < mesh.vertex_count(); ++v) {
+    for (const int* t = mesh.triangles_of_vertex_begin(v); t != mesh.triangles_of_vertex_end(v); ++t) {
+      const auto& tri = mesh.triangles()[*t];
+      CHECK((tri[0] == v || tri[1] == v || tri[2] == v));
+      ++incident;
+    }
+  }
+  CHECK(incident == 36);
+  CHECK(mesh.adjacent(0, 0));
+  CHECK(mesh.bounding_box_diagonal() == Approx(std::sqrt(3.0)));
+  // Brute force: adjacent iff some vertex is shared.
+  for (int a = 0; a < mesh.triangle_count(); ++a) {
+    for (int b = 0; b < mesh.triangle_count(); ++b) {
+      bool shared = false;
+      for (int i : mesh.triangles()[a]) {
+        for (int j : mesh.triangles()[b]) shared = shared || i == j;
+      }
+      CHECK(mesh.adjacent(a, b) == shared);
+    }
+  }
+}
+
+TEST_CASE("OBJ: corner forms, negative indices, ignored statements", "[mesh]") {
+  const std::string obj =
+      "# comment\nmtllib x.mtl\no thing\n"
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"
+      "f 1/1/1 2/1/1 3/1/1\nf -4//1 -2//1 -1//1\ns off\nf 1 3 4\n";
+  sscc::MeshReadReport report;
+  const sscc::TriangleMesh mesh = sscc::read_mesh(scratch_file("square.OBJ", obj), &report);
+  CHECK(mesh.vertex_count() == 4);
+  REQUIRE(mesh.triangle_count() == 3);
+  CHECK(mesh.triangles()[1] == sscc::Triangle{0, 2, 3});
+  REQUIRE(report.duplicate_triangles.size() == 1);
+  CHECK(report.duplicate_triangles[0] == std::pair<int, int>{1, 2});
+}
+
+TEST_CASE("PLY: ASCII and both binary byte orders give the same mesh", "[mesh]") {
+  const std::string header_tail =
+      "element vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+      "property uchar red\nelement face 2\nproperty list uchar int vertex_indices\n"
+      "element extra 1\nproperty float w\nend_header\n";
+  const std::string ascii = "ply\nformat ascii 1.0\ncomment made by a test\n" + header_tail +
+                            "0 0 0 9\n1 0 0 9\n1 1 0 9\n0 1 2.5 9\n3 0 1 2\n3 0 2 3\n7\n";
+  const sscc::TriangleMesh reference = sscc::read_mesh(scratch_file("a.ply", ascii));
+  for (const bool big : {false, true}) {
+    std::string data;
+    const auto put = [&](const void* p, std::size_t n) {
+      std::string bytes(static_cast<const char*>(p), n);
+      const std::uint16_t one = 1;
+      const bool little_host = *reinterpret_cast<const unsigned char*>(&one) == 1;
+      if (big == little_host) std::reverse(bytes.begin(), bytes.end());
+      data += bytes;
+    };
+    const double xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 2.5}};
+    for (const auto& p : xyz) {
+      for (double c : p) put(&c, 8);
+      const unsigned char red = 9;
+      put(&red, 1);
+    }
+    const int faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    for (const auto& f : faces) {
+      const unsigned char n = 3;
+      put(&n, 1);
+      for (int i : f) put(&i, 4);
+    }
+    const float w = 7;
+    put(&w, 4);
+    const std::string file = std::string("ply\nformat ") +
+                             (big ? "binary_big_endian" : "binary_little_endian") + " 1.0\n" +
+                             header_tail + data;
+    const sscc::TriangleMesh mesh = sscc::read_mesh(scratch_file(big ? "b.ply" : "l.ply", file));
+    CHECK(mesh.vertices() == reference.vertices());
+    CHECK(mesh.triangles() == reference.triangles());
+  }
+  CHECK(reference.vertices()[3].z() == 2.5);
+}
+
+TEST_CASE("zero-area triangles are reported", "[mesh]") {
+  sscc::MeshReadReport report;
+  sscc::read_mesh(scratch_file("flat.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n3 0 1 2\n3 0 1 3\n"),
+                  &report);
+  REQUIRE(report.zero_area_triangles.size() == 1);
+  CHECK(report.zero_area_triangles[0] == 0);
+  CHECK(report.summary() == "0 polygons triangulated, 1 zero-area triangle, 0 duplicate triangles");
+}
+
+TEST_CASE("bad files are refused with the file, the line and the problem", "[mesh]") {
+  const auto error_of = [](const std::string& name, const std::string& content) {
+    try {
+      sscc::read_mesh(scratch_file(name, content));
+    } catch (const sscc::MeshFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(error_of("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"),
+             Catch::Contains("nan.off:4") && Catch::Contains("not a finite double"));
+  CHECK_THAT(error_of("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
+             Catch::Contains("range.off:6") && Catch::Contains("outside [0, 3)"));
+  CHECK_THAT(error_of("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
+             Catch::Contains("file ends after 2 of 3 vertices"));
+  CHECK_THAT(error_of("line.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n"),
+             Catch::Contains("at least three vertices"));
+  CHECK_THAT(error_of("repeat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"),
+             Catch::Contains("repeat.obj:4") && Catch::Contains("repeats a vertex"));
+  CHECK_THAT(error_of("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"),
+             Catch::Contains("start at 1"));
+  CHECK_THAT(error_of("points.obj", "v 0 0 0\nv 1 0 0\n"), Catch::Contains("no faces"));
+  CHECK_THAT(error_of("text.off", "hello world\n"), Catch::Contains("expected the header 'OFF'"));
+  CHECK_THAT(error_of("mesh.stl", "solid\n"), Catch::Contains("unknown mesh format"));
+  CHECK_THAT(error_of("cut.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2\n"
+                                 "property float x\nproperty float y\nproperty float z\nend_header\nab"),
+             Catch::Contains("binary data ends early"));
+  CHECK_THAT(error_of("word.obj", "v 0 zero 0\n"), Catch::Contains("'zero' is not a number"));
+  CHECK_THROWS_WITH(sscc::read_mesh("/nonexistent/x.off"), Catch::Contains("cannot open"));
+}
+
+TEST_CASE("the real meshes beside the repository load", "[mesh]") {
+  const fs::path meshes = fs::path(SSCC_SOURCE_DIR) / ".." / "shared" / "data" / "meshes";
+  if (!fs::is_directory(meshes)) {
+    WARN("skipped: ../shared/data/meshes is not beside the repository");
+    return;
+  }
+  sscc::MeshReadReport report;
+  const sscc::TriangleMesh lion = sscc::read_mesh((meshes / "lion.off").string(), &report);
+  CHECK(lion.vertex_count() == 7529);
+  CHECK(lion.triangle_count() == 14859);
+  CHECK(report.polygons_triangulated == 0);
+}
