@@ -6,3 +6,6 @@
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/mesh/mesh_io.hpp"
 #include "sscc/mesh/triangle_mesh.hpp"
+#include "sscc/model/basis_io.hpp"
+#include "sscc/model/polynomial_basis.hpp"
+#include "sscc/model/subspace_model.hpp"

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "common/finite.hpp"
 #include "mesh/mesh_parsing.hpp"
 
 namespace sscc::mesh_parsing {
@@ -156,7 +157,7 @@ RawMesh read_ply(LineReader& reader) {
         }
       }
       if (e.name == "vertex") {
-        if (!position.allFinite()) reader.fail("vertex " + std::to_string(i) + " is not finite");
+        if (!all_finite(position)) reader.fail("vertex " + std::to_string(i) + " is not finite");
         mesh.vertices.push_back(position);
       }
     }

@@ -1,0 +1,49 @@
+// A reduced deformable object: x = p + U q for rest positions p (the mesh's vertices), a
+// basis U (3V x r; row 3v + k is vertex v's coordinate k) and reduced coordinates q, with a
+// diagonal weight M (||q||_M^2 = sum_i w_i q_i^2).
+//
+// The basis is kept scaled, U_hat = U M^(-1/2), with q_hat = M^(1/2) q, so that every bound
+// downstream is a plain 2-norm of q_hat (SSCC paper, eq. 3). Immutable once built; safe to
+// share between threads.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+#include "sscc/mesh/triangle_mesh.hpp"
+
+namespace sscc {
+
+using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+class SubspaceModel {
+ public:
+  /// Throws std::invalid_argument when the basis is not 3V x r (naming both sizes), r is 0,
+  /// the weights are not r positive finite numbers, or any entry is not finite.
+  SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis, const Eigen::VectorXd& weights);
+
+  const TriangleMesh& mesh() const { return mesh_; }
+  int mode_count() const { return static_cast<int>(weights_.size()); }
+  const Eigen::VectorXd& weights() const { return weights_; }
+  /// U M^(-1/2), 3V x r, row-major (a vertex's three rows are contiguous).
+  const RowMajorMatrix& scaled_basis() const { return scaled_basis_; }
+
+  /// M^(1/2) q. Throws std::invalid_argument when q has the wrong size or a NaN/infinity.
+  Eigen::VectorXd scaled_coordinates(const Eigen::VectorXd& q) const;
+  /// ||q||_M.
+  double weighted_norm(const Eigen::VectorXd& q) const;
+  /// Vertex v's position for scaled coordinates q_hat (3r flops).
+  Eigen::Vector3d position(int v, const Eigen::VectorXd& q_hat) const {
+    return mesh_.vertices()[v] + scaled_basis_.middleRows<3>(3 * v) * q_hat;
+  }
+  /// All positions for coordinates q (not scaled).
+  std::vector<Eigen::Vector3d> deformed_positions(const Eigen::VectorXd& q) const;
+
+ private:
+  TriangleMesh mesh_;
+  Eigen::VectorXd weights_;
+  RowMajorMatrix scaled_basis_;
+};
+
+}  // namespace sscc

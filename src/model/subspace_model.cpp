@@ -1,0 +1,60 @@
+#include "sscc/model/subspace_model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "common/finite.hpp"
+
+namespace sscc {
+
+SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis,
+                             const Eigen::VectorXd& weights)
+    : mesh_(std::move(mesh)), weights_(weights) {
+  const long rows = 3L * mesh_.vertex_count();
+  if (basis.rows() != rows) {
+    throw std::invalid_argument("SubspaceModel: the basis has " + std::to_string(basis.rows()) +
+                                " rows, but the mesh's " + std::to_string(mesh_.vertex_count()) +
+                                " vertices need " + std::to_string(rows));
+  }
+  if (basis.cols() == 0) throw std::invalid_argument("SubspaceModel: the basis has no modes");
+  if (weights.size() != basis.cols()) {
+    throw std::invalid_argument("SubspaceModel: " + std::to_string(weights.size()) +
+                                " weights for " + std::to_string(basis.cols()) + " modes");
+  }
+  if (!all_finite(basis)) throw std::invalid_argument("SubspaceModel: the basis has a NaN or infinity");
+  for (long i = 0; i < weights.size(); ++i) {
+    if (!(weights[i] > 0.0) || !std::isfinite(weights[i])) {
+      throw std::invalid_argument("SubspaceModel: weight " + std::to_string(i) +
+                                  " is not a positive finite number");
+    }
+  }
+  scaled_basis_ = basis * weights_.cwiseSqrt().cwiseInverse().asDiagonal();
+}
+
+Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) const {
+  if (q.size() != weights_.size()) {
+    throw std::invalid_argument("SubspaceModel: q has " + std::to_string(q.size()) +
+                                " coordinates, the model has " + std::to_string(weights_.size()) +
+                                " modes");
+  }
+  for (long i = 0; i < q.size(); ++i) {
+    if (!std::isfinite(q[i])) {
+      throw std::invalid_argument("SubspaceModel: q[" + std::to_string(i) + "] is not finite");
+    }
+  }
+  return weights_.cwiseSqrt().cwiseProduct(q);
+}
+
+double SubspaceModel::weighted_norm(const Eigen::VectorXd& q) const {
+  return scaled_coordinates(q).norm();
+}
+
+std::vector<Eigen::Vector3d> SubspaceModel::deformed_positions(const Eigen::VectorXd& q) const {
+  const Eigen::VectorXd q_hat = scaled_coordinates(q);
+  std::vector<Eigen::Vector3d> x(mesh_.vertex_count());
+  for (int v = 0; v < mesh_.vertex_count(); ++v) x[v] = position(v, q_hat);
+  return x;
+}
+
+}  // namespace sscc
