@@ -2,6 +2,7 @@
 // This umbrella header includes the public API.
 #pragma once
 
+#include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/ccd/ccd_types.hpp"
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/mesh/mesh_io.hpp"
@@ -9,3 +10,4 @@
 #include "sscc/model/basis_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/model/subspace_model.hpp"
+#include "sscc/query/self_ccd.hpp"

@@ -1,0 +1,97 @@
+// A 4-ary bounding volume hierarchy over a subspace model's triangles whose node bounds
+// hold in every configuration q, computed in O(r) per node (BD-tree style).
+//
+// Built by recursive k-means (k = 4) on each triangle's rest centroid together with its
+// mode displacements (SSCC paper, section 3): triangles that are close and move alike share
+// a node. Children partition their parent's triangles; leaves hold at most kMaxLeafTriangles.
+//
+// Bound of node n for scaled coordinates q_hat: with c0 the centre of the rest box of the
+// node's vertices, C the mean of their 3 x r scaled mode blocks, h0 the rest half extents
+// and d_k = max over the vertices of ||(U_hat_v - C)_k||_2,
+//   |x_vk(q_hat) - (c0 + C q_hat)_k| <= h0_k + d_k ||q_hat||   (Cauchy-Schwarz),
+// so the box centre(q_hat) +- (h0 + d ||q_hat||) contains the node in configuration q_hat.
+// Over a straight-line step the centre moves linearly and ||q_hat(t)|| <= max of the end
+// norms (convexity), so the box spanned by the end centres, grown by h0 + d max(||q_hat0||,
+// ||q_hat1||), contains the node for the whole step. Boxes are widened by a rounding margin
+// so that they also contain the vertex positions as computed in floating point.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "sscc/model/subspace_model.hpp"
+
+namespace sscc {
+
+inline constexpr int kBranchingFactor = 4;
+inline constexpr int kMaxLeafTriangles = 4;
+
+struct Aabb {
+  Eigen::Vector3d lo;
+  Eigen::Vector3d hi;
+  bool overlaps(const Aabb& o) const {
+    return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all();
+  }
+  bool contains(const Eigen::Vector3d& p) const {
+    return (lo.array() <= p.array()).all() && (p.array() <= hi.array()).all();
+  }
+};
+
+struct BvhBuildStats {
+  int nodes = 0;
+  int leaves = 0;
+  int depth = 0;
+  int largest_leaf = 0;
+  double seconds = 0.0;
+};
+
+class SubspaceBvh {
+ public:
+  struct Node {
+    int first_child = -1;  ///< -1 for a leaf; children are consecutive
+    int child_count = 0;
+    int triangle_begin = 0;  ///< range in triangle_order()
+    int triangle_end = 0;
+    bool is_leaf() const { return first_child < 0; }
+  };
+
+  /// Builds the hierarchy; `seed` makes the k-means seeding reproducible.
+  explicit SubspaceBvh(const SubspaceModel& model, std::uint64_t seed = 1);
+
+  const SubspaceModel& model() const { return model_; }
+  const std::vector<Node>& nodes() const { return nodes_; }
+  /// Triangle indices, grouped so that each node's triangles are contiguous.
+  const std::vector<int>& triangle_order() const { return order_; }
+  const BvhBuildStats& build_stats() const { return stats_; }
+
+  /// Box of node n for scaled coordinates q_hat, whose norm is given (O(r)).
+  Aabb box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) const;
+  /// Box of node n over the straight-line step q_hat0 -> q_hat1; s = max of their norms.
+  Aabb swept_box(int n, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1,
+                 double s) const;
+
+  /// Checks the structure (children partition their parent, every triangle in exactly one
+  /// leaf, leaf sizes) and that every node's box contains its vertices at `samples` random
+  /// configurations of scaled norm up to `max_norm`. Returns "" when valid, else the first
+  /// problem.
+  std::string validate(int samples, double max_norm, std::uint64_t seed) const;
+
+ private:
+  void build(int node, std::vector<int>& triangles, std::mt19937_64& rng, int depth);
+  void compute_bounds(int node);
+
+  const SubspaceModel& model_;
+  std::vector<Node> nodes_;
+  std::vector<int> order_;
+  // Per node: rest centre c0, rest half extents h0, deviation rates d (3 each) and the
+  // mean mode block C (3 x r, row-major).
+  std::vector<Eigen::Vector3d> centre_, half_, rate_;
+  std::vector<double> mean_modes_;
+  std::vector<double> feature_;  // per triangle: centroid and mode block, 3 + 3r values
+  BvhBuildStats stats_;
+};
+
+}  // namespace sscc

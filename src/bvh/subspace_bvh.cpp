@@ -1,0 +1,245 @@
+#include "sscc/bvh/subspace_bvh.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace sscc {
+
+namespace {
+
+constexpr int kKMeansIterations = 8;
+
+double squared_distance(const double* a, const double* b, int dims) {
+  double s = 0.0;
+  for (int i = 0; i < dims; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return s;
+}
+
+}  // namespace
+
+SubspaceBvh::SubspaceBvh(const SubspaceModel& model, std::uint64_t seed) : model_(model) {
+  const auto start = std::chrono::steady_clock::now();
+  const TriangleMesh& mesh = model.mesh();
+  const int r = model.mode_count();
+  const int dims = 3 + 3 * r;
+  feature_.assign(static_cast<std::size_t>(mesh.triangle_count()) * dims, 0.0);
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    double* f = &feature_[static_cast<std::size_t>(t) * dims];
+    for (int v : mesh.triangles()[t]) {
+      for (int k = 0; k < 3; ++k) {
+        f[k] += mesh.vertices()[v][k] / 3.0;
+        for (int j = 0; j < r; ++j) f[3 + k * r + j] += model.scaled_basis()(3 * v + k, j) / 3.0;
+      }
+    }
+  }
+  std::vector<int> all(mesh.triangle_count());
+  for (int t = 0; t < mesh.triangle_count(); ++t) all[t] = t;
+  std::mt19937_64 rng(seed);
+  nodes_.emplace_back();
+  build(0, all, rng, 0);
+  feature_.clear();
+  feature_.shrink_to_fit();
+  centre_.resize(nodes_.size());
+  half_.resize(nodes_.size());
+  rate_.resize(nodes_.size());
+  mean_modes_.assign(nodes_.size() * 3 * static_cast<std::size_t>(r), 0.0);
+  for (int n = 0; n < static_cast<int>(nodes_.size()); ++n) compute_bounds(n);
+  stats_.nodes = static_cast<int>(nodes_.size());
+  stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SubspaceBvh::build(int node, std::vector<int>& triangles, std::mt19937_64& rng, int depth) {
+  stats_.depth = std::max(stats_.depth, depth);
+  nodes_[node].triangle_begin = static_cast<int>(order_.size());
+  const int n = static_cast<int>(triangles.size());
+  if (n <= kMaxLeafTriangles) {
+    order_.insert(order_.end(), triangles.begin(), triangles.end());
+    nodes_[node].triangle_end = static_cast<int>(order_.size());
+    ++stats_.leaves;
+    stats_.largest_leaf = std::max(stats_.largest_leaf, n);
+    return;
+  }
+  const int dims = 3 + 3 * model_.mode_count();
+  const auto feature = [&](int t) { return &feature_[static_cast<std::size_t>(t) * dims]; };
+  // k-means++ seeding, then Lloyd iterations.
+  std::vector<double> centres(static_cast<std::size_t>(kBranchingFactor) * dims);
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+  int chosen = static_cast<int>(std::uniform_int_distribution<int>(0, n - 1)(rng));
+  for (int c = 0; c < kBranchingFactor; ++c) {
+    std::copy(feature(triangles[chosen]), feature(triangles[chosen]) + dims, &centres[c * dims]);
+    double total = 0.0;
+    for (int i = 0; i < n; ++i) {
+      nearest[i] = std::min(nearest[i], squared_distance(feature(triangles[i]), &centres[c * dims], dims));
+      total += nearest[i];
+    }
+    double pick = std::uniform_real_distribution<double>(0.0, total)(rng);
+    chosen = 0;
+    for (int i = 0; i < n; ++i) {
+      pick -= nearest[i];
+      if (pick <= 0.0) {
+        chosen = i;
+        break;
+      }
+    }
+  }
+  std::vector<int> cluster(n, 0);
+  for (int iteration = 0; iteration < kKMeansIterations; ++iteration) {
+    for (int i = 0; i < n; ++i) {
+      double best = std::numeric_limits<double>::infinity();
+      for (int c = 0; c < kBranchingFactor; ++c) {
+        const double d = squared_distance(feature(triangles[i]), &centres[c * dims], dims);
+        if (d < best) best = d, cluster[i] = c;
+      }
+    }
+    std::vector<int> count(kBranchingFactor, 0);
+    std::fill(centres.begin(), centres.end(), 0.0);
+    for (int i = 0; i < n; ++i) {
+      ++count[cluster[i]];
+      for (int j = 0; j < dims; ++j) centres[cluster[i] * dims + j] += feature(triangles[i])[j];
+    }
+    for (int c = 0; c < kBranchingFactor; ++c) {
+      for (int j = 0; j < dims && count[c] > 0; ++j) centres[c * dims + j] /= count[c];
+    }
+  }
+  std::vector<std::vector<int>> groups(kBranchingFactor);
+  for (int i = 0; i < n; ++i) groups[cluster[i]].push_back(triangles[i]);
+  groups.erase(std::remove_if(groups.begin(), groups.end(), [](const auto& g) { return g.empty(); }),
+               groups.end());
+  if (groups.size() < 2) {
+    // Identical features: split by index into quarters (any partition is correct).
+    groups.assign(kBranchingFactor, {});
+    for (int i = 0; i < n; ++i) groups[static_cast<std::size_t>(i) * kBranchingFactor / n].push_back(triangles[i]);
+  }
+  triangles.clear();
+  triangles.shrink_to_fit();
+  const int first = static_cast<int>(nodes_.size());
+  nodes_[node].first_child = first;
+  nodes_[node].child_count = static_cast<int>(groups.size());
+  nodes_.resize(nodes_.size() + groups.size());
+  for (std::size_t c = 0; c < groups.size(); ++c) build(first + static_cast<int>(c), groups[c], rng, depth + 1);
+  nodes_[node].triangle_end = static_cast<int>(order_.size());
+}
+
+void SubspaceBvh::compute_bounds(int n) {
+  const TriangleMesh& mesh = model_.mesh();
+  const int r = model_.mode_count();
+  const Node& node = nodes_[n];
+  std::vector<int> vertices;
+  for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
+    for (int v : mesh.triangles()[order_[i]]) vertices.push_back(v);
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  Eigen::Vector3d lo = mesh.vertices()[vertices[0]];
+  Eigen::Vector3d hi = lo;
+  double* mean = &mean_modes_[static_cast<std::size_t>(n) * 3 * r];
+  for (int v : vertices) {
+    lo = lo.cwiseMin(mesh.vertices()[v]);
+    hi = hi.cwiseMax(mesh.vertices()[v]);
+    for (int k = 0; k < 3; ++k) {
+      for (int j = 0; j < r; ++j) mean[k * r + j] += model_.scaled_basis()(3 * v + k, j);
+    }
+  }
+  for (int i = 0; i < 3 * r; ++i) mean[i] /= static_cast<double>(vertices.size());
+  centre_[n] = 0.5 * (lo + hi);
+  half_[n] = 0.5 * (hi - lo);
+  rate_[n].setZero();
+  for (int v : vertices) {
+    for (int k = 0; k < 3; ++k) {
+      double squared = 0.0;
+      for (int j = 0; j < r; ++j) {
+        const double deviation = model_.scaled_basis()(3 * v + k, j) - mean[k * r + j];
+        squared += deviation * deviation;
+      }
+      rate_[n][k] = std::max(rate_[n][k], std::sqrt(squared));
+    }
+  }
+  // Widen the rest box and the rates by a relative margin covering the rounding of the
+  // vertex positions p + U_hat q_hat (an r-term dot product) and of the bound itself.
+  const double relative = 4.0 * (r + 4) * std::numeric_limits<double>::epsilon();
+  for (int k = 0; k < 3; ++k) {
+    double mean_norm = 0.0;
+    for (int j = 0; j < r; ++j) mean_norm += mean[k * r + j] * mean[k * r + j];
+    half_[n][k] += relative * (std::fabs(centre_[n][k]) + half_[n][k]) + std::numeric_limits<double>::min();
+    rate_[n][k] += relative * (std::sqrt(mean_norm) + rate_[n][k]);
+  }
+}
+
+Aabb SubspaceBvh::box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) const {
+  const int r = model_.mode_count();
+  const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> mean(
+      &mean_modes_[static_cast<std::size_t>(n) * 3 * r], 3, r);
+  const Eigen::Vector3d centre = centre_[n] + mean * q_hat;
+  const Eigen::Vector3d half = half_[n] + rate_[n] * q_hat_norm;
+  return {centre - half, centre + half};
+}
+
+Aabb SubspaceBvh::swept_box(int n, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1,
+                            double s) const {
+  const int r = model_.mode_count();
+  const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> mean(
+      &mean_modes_[static_cast<std::size_t>(n) * 3 * r], 3, r);
+  const Eigen::Vector3d c0 = centre_[n] + mean * q_hat0;
+  const Eigen::Vector3d c1 = centre_[n] + mean * q_hat1;
+  const Eigen::Vector3d half = half_[n] + rate_[n] * s;
+  return {c0.cwiseMin(c1) - half, c0.cwiseMax(c1) + half};
+}
+
+std::string SubspaceBvh::validate(int samples, double max_norm, std::uint64_t seed) const {
+  const TriangleMesh& mesh = model_.mesh();
+  std::vector<int> leaf_of(mesh.triangle_count(), -1);
+  for (int n = 0; n < static_cast<int>(nodes_.size()); ++n) {
+    const Node& node = nodes_[n];
+    if (node.triangle_begin >= node.triangle_end) return "node " + std::to_string(n) + " is empty";
+    if (node.is_leaf()) {
+      if (node.triangle_end - node.triangle_begin > kMaxLeafTriangles) {
+        return "leaf " + std::to_string(n) + " holds too many triangles";
+      }
+      for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
+        if (leaf_of[order_[i]] != -1) return "triangle " + std::to_string(order_[i]) + " in two leaves";
+        leaf_of[order_[i]] = n;
+      }
+      continue;
+    }
+    if (node.child_count < 2 || node.child_count > kBranchingFactor) {
+      return "node " + std::to_string(n) + " has " + std::to_string(node.child_count) + " children";
+    }
+    int cursor = node.triangle_begin;
+    for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
+      if (nodes_[c].triangle_begin != cursor) return "children of node " + std::to_string(n) + " leave a gap";
+      cursor = nodes_[c].triangle_end;
+    }
+    if (cursor != node.triangle_end) return "children of node " + std::to_string(n) + " do not cover it";
+  }
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    if (leaf_of[t] == -1) return "triangle " + std::to_string(t) + " is in no leaf";
+  }
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const int r = model_.mode_count();
+  for (int sample = 0; sample < samples; ++sample) {
+    Eigen::VectorXd q_hat(r);
+    for (int j = 0; j < r; ++j) q_hat[j] = normal(rng);
+    q_hat *= max_norm * uniform(rng) / q_hat.norm();
+    const double norm = q_hat.norm();
+    std::vector<Eigen::Vector3d> x(mesh.vertex_count());
+    for (int v = 0; v < mesh.vertex_count(); ++v) x[v] = model_.position(v, q_hat);
+    for (int n = 0; n < static_cast<int>(nodes_.size()); ++n) {
+      const Aabb b = box(n, q_hat, norm);
+      for (int i = nodes_[n].triangle_begin; i < nodes_[n].triangle_end; ++i) {
+        for (int v : mesh.triangles()[order_[i]]) {
+          if (!b.contains(x[v])) {
+            return "node " + std::to_string(n) + " does not contain vertex " + std::to_string(v) +
+                   " at a sampled configuration of norm " + std::to_string(norm);
+          }
+        }
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace sscc

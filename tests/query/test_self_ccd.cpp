@@ -1,0 +1,100 @@
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "sscc/ccd/kernels.hpp"
+#include "sscc/model/polynomial_basis.hpp"
+#include "sscc/query/self_ccd.hpp"
+#include "support/test_meshes.hpp"
+
+namespace {
+
+struct Fixture {
+  sscc::TriangleMesh mesh = sscc::test::uv_sphere(10, 20);
+  sscc::SubspaceModel model{mesh, sscc::polynomial_basis(mesh, 27), Eigen::VectorXd::Ones(27)};
+  sscc::SubspaceBvh bvh{model};
+  sscc::SelfCcd ccd{bvh};
+};
+
+Eigen::VectorXd random_q(std::mt19937_64& rng, double amplitude) {
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd q(27);
+  for (int j = 0; j < 27; ++j) q[j] = amplitude * normal(rng) / std::sqrt(27.0);
+  return q;
+}
+
+}  // namespace
+
+TEST_CASE("self-CCD: the traversal reports exactly what exhaustive testing does", "[query]") {
+  const Fixture f;
+  std::mt19937_64 rng(21);
+  int colliding = 0;
+  int quiet = 0;
+  for (double amplitude : {0.02, 0.15, 0.4, 0.8}) {
+    for (int step = 0; step < 6; ++step) {
+      const Eigen::VectorXd q0 = random_q(rng, amplitude);
+      const Eigen::VectorXd q1 = q0 + random_q(rng, amplitude);
+      const sscc::SelfCcdReport fast = f.ccd.query(q0, q1);
+      const sscc::SelfCcdReport all = f.ccd.query_exhaustive(q0, q1);
+      INFO("amplitude " << amplitude << " step " << step);
+      CHECK(fast.pairs == all.pairs);
+      CHECK(fast.features == all.features);
+      CHECK(fast.earliest_toi == all.earliest_toi);
+      CHECK(fast.stats.triangle_pairs <= all.stats.triangle_pairs);
+      (fast.collided() ? colliding : quiet) += 1;
+      for (const auto& p : fast.pairs) CHECK_FALSE(f.mesh.adjacent(p.first, p.second));
+      // Any-hit agrees on whether the step collides, and reports one of the pairs.
+      sscc::SelfCcdOptions any;
+      any.mode = sscc::SelfCcdMode::kAnyHit;
+      const sscc::SelfCcdReport first = f.ccd.query(q0, q1, any);
+      CHECK(first.collided() == fast.collided());
+      if (first.collided()) {
+        CHECK(first.pairs.size() == 1);
+        CHECK(std::find_if(fast.pairs.begin(), fast.pairs.end(), [&](const auto& p) {
+                return p.first == first.pairs[0].first && p.second == first.pairs[0].second;
+              }) != fast.pairs.end());
+      }
+    }
+  }
+  CHECK(colliding >= 4);
+  CHECK(quiet >= 4);
+}
+
+TEST_CASE("self-CCD: discrete query against all pairs", "[query]") {
+  const Fixture f;
+  std::mt19937_64 rng(22);
+  int intersecting = 0;
+  for (double amplitude : {0.05, 0.5, 1.0}) {
+    for (int sample = 0; sample < 4; ++sample) {
+      const Eigen::VectorXd q = random_q(rng, amplitude);
+      const std::vector<Eigen::Vector3d> x = f.model.deformed_positions(q);
+      std::vector<std::pair<int, int>> expected;
+      for (int a = 0; a < f.mesh.triangle_count(); ++a) {
+        for (int b = a + 1; b < f.mesh.triangle_count(); ++b) {
+          if (f.mesh.adjacent(a, b)) continue;
+          const auto& ta = f.mesh.triangles()[a];
+          const auto& tb = f.mesh.triangles()[b];
+          if (sscc::ccd::triangles_intersect(x[ta[0]], x[ta[1]], x[ta[2]], x[tb[0]], x[tb[1]], x[tb[2]])) {
+            expected.emplace_back(a, b);
+          }
+        }
+      }
+      const sscc::SelfCcdReport report = f.ccd.query_discrete(q);
+      std::vector<std::pair<int, int>> found;
+      for (const auto& p : report.pairs) found.emplace_back(p.first, p.second);
+      CHECK(found == expected);
+      intersecting += !expected.empty();
+    }
+  }
+  CHECK(intersecting >= 2);
+}
+
+TEST_CASE("self-CCD: a step that does not move reports nothing, bad q is refused", "[query]") {
+  const Fixture f;
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(27);
+  CHECK_FALSE(f.ccd.query(rest, rest).collided());
+  CHECK_THROWS_WITH(f.ccd.query(Eigen::VectorXd::Zero(3), rest), Catch::Contains("q has 3 coordinates"));
+  Eigen::VectorXd bad = rest;
+  bad[4] = std::nan("");
+  CHECK_THROWS_WITH(f.ccd.query(rest, bad), Catch::Contains("q[4] is not finite"));
+}
