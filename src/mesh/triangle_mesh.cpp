@@ -56,6 +56,23 @@ TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Tr
   for (int t = 0; t < triangle_count(); ++t) {
     for (int v : triangles_[t]) vertex_triangles_[fill[v]++] = t;
   }
+  // half_edges is sorted by edge: each edge's triangles are consecutive there.
+  edge_triangle_offsets_.assign(edges_.size() + 1, 0);
+  edge_triangles_.reserve(half_edges.size());
+  for (std::size_t i = 0; i < half_edges.size(); ++i) {
+    const int t = half_edges[i].second / 3;
+    edge_triangles_.push_back(t);
+    ++edge_triangle_offsets_[triangle_edges_[t][half_edges[i].second % 3] + 1];
+  }
+  for (std::size_t e = 0; e < edges_.size(); ++e) edge_triangle_offsets_[e + 1] += edge_triangle_offsets_[e];
+}
+
+const int* TriangleMesh::triangles_of_edge_begin(int e) const {
+  return edge_triangles_.data() + edge_triangle_offsets_[e];
+}
+
+const int* TriangleMesh::triangles_of_edge_end(int e) const {
+  return edge_triangles_.data() + edge_triangle_offsets_[e + 1];
 }
 
 const int* TriangleMesh::triangles_of_vertex_begin(int v) const {

@@ -4,7 +4,8 @@
 #include <chrono>
 #include <cstdint>
 #include <tuple>
-#include <unordered_map>
+#include <climits>
+#include <map>
 
 #include "sscc/ccd/kernels.hpp"
 
@@ -53,41 +54,80 @@ class StepContext {
         s_(std::max(q_hat0_.norm(), q_hat1_.norm())),
         x0_(mesh_.vertex_count()),
         x1_(mesh_.vertex_count()),
-        computed_(mesh_.vertex_count(), 0) {}
+        computed_(mesh_.vertex_count(), 0) {
+    if (options.bounds == NodeBounds::kRefit) refit();
+  }
 
   Aabb node_box(int n) {
     ++stats_.box_tests;
-    return bvh_.swept_box(n, q_hat0_, q_hat1_, s_);
+    return options_.bounds == NodeBounds::kRefit ? refitted_[n] : bvh_.swept_box(n, q_hat0_, q_hat1_, s_);
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
 
-  /// Kernels on the features of a non-adjacent triangle pair whose swept boxes meet.
+  /// Kernels on the features of a non-adjacent triangle pair whose swept boxes meet. Each
+  /// feature pair is tested in one triangle pair only, its owner: the smallest
+  /// non-adjacent pair of triangles containing it. Whenever the feature's boxes overlap,
+  /// every triangle and node box containing them overlaps too, so the owner is visited.
   void test_triangle_pair(int a, int b) {
     if (stop_ || mesh_.adjacent(a, b)) return;
-    if (!triangle_box(a).overlaps(triangle_box(b))) return;
+    const Aabb box_a = triangle_box(a);
+    const Aabb box_b = triangle_box(b);
+    if (!box_a.overlaps(box_b)) return;
     ++stats_.triangle_pairs;
-    double earliest = 2.0;
+    const std::pair<int, int> pair{std::min(a, b), std::max(a, b)};
     const Triangle& ta = mesh_.triangles()[a];
     const Triangle& tb = mesh_.triangles()[b];
     for (int i = 0; i < 3; ++i) {
-      earliest = std::min(earliest, vertex_face(ta[i], b));
-      earliest = std::min(earliest, vertex_face(tb[i], a));
-      for (int j = 0; j < 3; ++j) {
-        earliest = std::min(earliest, edge_edge(mesh_.triangle_edges(a)[i], mesh_.triangle_edges(b)[j]));
-      }
+      if (point_box(ta[i]).overlaps(box_b) && vertex_face_owner(ta[i], b) == pair) vertex_face(ta[i], b);
+      if (point_box(tb[i]).overlaps(box_a) && vertex_face_owner(tb[i], a) == pair) vertex_face(tb[i], a);
     }
-    if (earliest <= 1.0) {
-      pairs_.push_back({std::min(a, b), std::max(a, b), earliest});
-      if (options_.mode == SelfCcdMode::kAnyHit) stop_ = true;
+    for (int i = 0; i < 3; ++i) {
+      const int e = mesh_.triangle_edges(a)[i];
+      const Aabb edge_a = edge_box(e);
+      if (!edge_a.overlaps(box_b)) continue;
+      for (int j = 0; j < 3; ++j) {
+        const int g = mesh_.triangle_edges(b)[j];
+        if (edge_a.overlaps(edge_box(g)) && edge_edge_owner(e, g) == pair) edge_edge(e, g);
+      }
     }
   }
 
   SelfCcdReport finish(std::chrono::steady_clock::time_point start) {
-    return sorted_report(std::move(pairs_), std::move(feature_hits_), stats_, start);
+    std::vector<TrianglePairContact> pairs = pairs_from_features();  // before the move below
+    return sorted_report(std::move(pairs), std::move(feature_hits_), stats_, start);
   }
 
  private:
+  /// All positions, the triangles' and edges' swept boxes, then the nodes' bottom-up
+  /// (children come after their parent).
+  void refit() {
+    for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
+    triangle_boxes_.resize(mesh_.triangle_count());
+    for (int t = 0; t < mesh_.triangle_count(); ++t) triangle_boxes_[t] = box_of(x0_, x1_, mesh_.triangles()[t]);
+    edge_boxes_.resize(mesh_.edges().size());
+    for (std::size_t e = 0; e < mesh_.edges().size(); ++e) edge_boxes_[e] = segment_box(mesh_.edges()[e]);
+    const auto& nodes = bvh_.nodes();
+    refitted_.resize(nodes.size());
+    for (int n = static_cast<int>(nodes.size()) - 1; n >= 0; --n) {
+      const SubspaceBvh::Node& node = nodes[n];
+      Aabb& box = refitted_[n];
+      box = {Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
+      if (node.is_leaf()) {
+        for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
+          const Aabb& t = triangle_boxes_[bvh_.triangle_order()[i]];
+          box.lo = box.lo.cwiseMin(t.lo);
+          box.hi = box.hi.cwiseMax(t.hi);
+        }
+        continue;
+      }
+      for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
+        box.lo = box.lo.cwiseMin(refitted_[c].lo);
+        box.hi = box.hi.cwiseMax(refitted_[c].hi);
+      }
+    }
+  }
+
   void ensure_vertex(int v) {
     if (computed_[v]) return;
     x0_[v] = bvh_.model().position(v, q_hat0_);
@@ -96,44 +136,96 @@ class StepContext {
     ++stats_.vertices_computed;
   }
 
+  Aabb point_box(int v) const { return {x0_[v].cwiseMin(x1_[v]), x0_[v].cwiseMax(x1_[v])}; }
+
+  Aabb segment_box(const Edge& ends) const {
+    const Aabb a = point_box(ends[0]);
+    const Aabb b = point_box(ends[1]);
+    return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
+  }
+
+  // Refitting fills these arrays; the subspace bounds compute them as leaves need them.
+  Aabb edge_box(int e) const {
+    return edge_boxes_.empty() ? segment_box(mesh_.edges()[e]) : edge_boxes_[e];
+  }
+
   Aabb triangle_box(int t) {
+    if (!triangle_boxes_.empty()) return triangle_boxes_[t];
     for (int v : mesh_.triangles()[t]) ensure_vertex(v);
     return box_of(x0_, x1_, mesh_.triangles()[t]);
   }
 
-  /// Time of impact of a feature pair (2 for none), computed once per query.
-  template <typename Kernel>
-  double feature(FeatureKind kind, int first, int second, Kernel kernel) {
-    const std::uint64_t key = (static_cast<std::uint64_t>(kind) << 63) |
-                              (static_cast<std::uint64_t>(first) << 31) | static_cast<std::uint64_t>(second);
-    const auto [it, inserted] = results_.emplace(key, 2.0);
-    if (inserted) {
-      ++stats_.kernel_calls;
-      const ccd::CcdResult r = kernel();
-      if (r.hit) {
-        it->second = r.toi;
-        feature_hits_.push_back({kind, first, second, r.toi});
+  /// The smallest non-adjacent triangle pair containing vertex v and triangle f.
+  std::pair<int, int> vertex_face_owner(int v, int f) const {
+    std::pair<int, int> owner{INT_MAX, INT_MAX};
+    for (const int* t = mesh_.triangles_of_vertex_begin(v); t != mesh_.triangles_of_vertex_end(v); ++t) {
+      if (!mesh_.adjacent(*t, f)) owner = std::min(owner, std::make_pair(std::min(*t, f), std::max(*t, f)));
+    }
+    return owner;
+  }
+
+  /// The smallest non-adjacent triangle pair containing edges e and g.
+  std::pair<int, int> edge_edge_owner(int e, int g) const {
+    std::pair<int, int> owner{INT_MAX, INT_MAX};
+    for (const int* t = mesh_.triangles_of_edge_begin(e); t != mesh_.triangles_of_edge_end(e); ++t) {
+      for (const int* u = mesh_.triangles_of_edge_begin(g); u != mesh_.triangles_of_edge_end(g); ++u) {
+        if (!mesh_.adjacent(*t, *u)) owner = std::min(owner, std::make_pair(std::min(*t, *u), std::max(*t, *u)));
       }
     }
-    return it->second;
+    return owner;
   }
 
-  double vertex_face(int v, int t) {
-    return feature(FeatureKind::kVertexFace, v, t, [&] {
-      const Triangle& f = mesh_.triangles()[t];
-      return ccd::vertex_face_ccd(x0_[v], x0_[f[0]], x0_[f[1]], x0_[f[2]], x1_[v], x1_[f[0]],
-                                  x1_[f[1]], x1_[f[2]], options_.kernel);
-    });
+  void record(const ccd::CcdResult& r, FeatureKind kind, int first, int second) {
+    ++stats_.kernel_calls;
+    if (!r.hit) return;
+    feature_hits_.push_back({kind, first, second, r.toi});
+    if (options_.mode == SelfCcdMode::kAnyHit) stop_ = true;
   }
 
-  double edge_edge(int e, int g) {
+  void vertex_face(int v, int t) {
+    if (stop_) return;
+    const Triangle& f = mesh_.triangles()[t];
+    record(ccd::vertex_face_ccd(x0_[v], x0_[f[0]], x0_[f[1]], x0_[f[2]], x1_[v], x1_[f[0]], x1_[f[1]],
+                                x1_[f[2]], options_.kernel),
+           FeatureKind::kVertexFace, v, t);
+  }
+
+  void edge_edge(int e, int g) {
+    if (stop_) return;
     if (e > g) std::swap(e, g);
-    return feature(FeatureKind::kEdgeEdge, e, g, [&] {
-      const Edge& a = mesh_.edges()[e];
-      const Edge& b = mesh_.edges()[g];
-      return ccd::edge_edge_ccd(x0_[a[0]], x0_[a[1]], x0_[b[0]], x0_[b[1]], x1_[a[0]], x1_[a[1]],
-                                x1_[b[0]], x1_[b[1]], options_.kernel);
-    });
+    const Edge& a = mesh_.edges()[e];
+    const Edge& b = mesh_.edges()[g];
+    record(ccd::edge_edge_ccd(x0_[a[0]], x0_[a[1]], x0_[b[0]], x0_[b[1]], x1_[a[0]], x1_[a[1]], x1_[b[0]],
+                              x1_[b[1]], options_.kernel),
+           FeatureKind::kEdgeEdge, e, g);
+  }
+
+  /// The colliding triangle pairs: every non-adjacent pair containing a feature that hit,
+  /// at the earliest of its features' times.
+  std::vector<TrianglePairContact> pairs_from_features() const {
+    std::map<std::pair<int, int>, double> earliest;
+    const auto add = [&](int t, int u, double toi) {
+      if (mesh_.adjacent(t, u)) return;
+      const auto key = std::make_pair(std::min(t, u), std::max(t, u));
+      const auto [it, inserted] = earliest.emplace(key, toi);
+      if (!inserted) it->second = std::min(it->second, toi);
+    };
+    for (const FeatureContact& c : feature_hits_) {
+      if (c.kind == FeatureKind::kVertexFace) {
+        for (const int* t = mesh_.triangles_of_vertex_begin(c.first); t != mesh_.triangles_of_vertex_end(c.first); ++t) {
+          add(*t, c.second, c.toi);
+        }
+      } else {
+        for (const int* t = mesh_.triangles_of_edge_begin(c.first); t != mesh_.triangles_of_edge_end(c.first); ++t) {
+          for (const int* u = mesh_.triangles_of_edge_begin(c.second); u != mesh_.triangles_of_edge_end(c.second); ++u) {
+            add(*t, *u, c.toi);
+          }
+        }
+      }
+    }
+    std::vector<TrianglePairContact> pairs;
+    for (const auto& [key, toi] : earliest) pairs.push_back({key.first, key.second, toi});
+    return pairs;
   }
 
   const SubspaceBvh& bvh_;
@@ -143,8 +235,7 @@ class StepContext {
   double s_;
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
-  std::unordered_map<std::uint64_t, double> results_;
-  std::vector<TrianglePairContact> pairs_;
+  std::vector<Aabb> refitted_, triangle_boxes_, edge_boxes_;
   std::vector<FeatureContact> feature_hits_;
   SelfCcdStats stats_;
   bool stop_ = false;

@@ -36,10 +36,15 @@ TEST_CASE("self-CCD: the traversal reports exactly what exhaustive testing does"
       const Eigen::VectorXd q1 = q0 + random_q(rng, amplitude);
       const sscc::SelfCcdReport fast = f.ccd.query(q0, q1);
       const sscc::SelfCcdReport all = f.ccd.query_exhaustive(q0, q1);
+      sscc::SelfCcdOptions subspace;
+      subspace.bounds = sscc::NodeBounds::kSubspace;
+      const sscc::SelfCcdReport lazy = f.ccd.query(q0, q1, subspace);
       INFO("amplitude " << amplitude << " step " << step);
       CHECK(fast.pairs == all.pairs);
       CHECK(fast.features == all.features);
       CHECK(fast.earliest_toi == all.earliest_toi);
+      CHECK(lazy.pairs == all.pairs);
+      CHECK(lazy.features == all.features);
       CHECK(fast.stats.triangle_pairs <= all.stats.triangle_pairs);
       (fast.collided() ? colliding : quiet) += 1;
       for (const auto& p : fast.pairs) CHECK_FALSE(f.mesh.adjacent(p.first, p.second));
@@ -49,10 +54,13 @@ TEST_CASE("self-CCD: the traversal reports exactly what exhaustive testing does"
       const sscc::SelfCcdReport first = f.ccd.query(q0, q1, any);
       CHECK(first.collided() == fast.collided());
       if (first.collided()) {
-        CHECK(first.pairs.size() == 1);
-        CHECK(std::find_if(fast.pairs.begin(), fast.pairs.end(), [&](const auto& p) {
-                return p.first == first.pairs[0].first && p.second == first.pairs[0].second;
-              }) != fast.pairs.end());
+        REQUIRE(first.features.size() == 1);
+        CHECK(std::find(fast.features.begin(), fast.features.end(), first.features[0]) != fast.features.end());
+        for (const auto& p : first.pairs) {
+          CHECK(std::find_if(fast.pairs.begin(), fast.pairs.end(), [&](const auto& q) {
+                  return p.first == q.first && p.second == q.second;
+                }) != fast.pairs.end());
+        }
       }
     }
   }

@@ -30,6 +30,9 @@ class TriangleMesh {
   /// The triangles that contain vertex v.
   const int* triangles_of_vertex_begin(int v) const;
   const int* triangles_of_vertex_end(int v) const;
+  /// The triangles that contain edge e (two on a closed manifold).
+  const int* triangles_of_edge_begin(int e) const;
+  const int* triangles_of_edge_end(int e) const;
   /// Whether triangles a and b share a vertex (a triangle is adjacent to itself).
   bool adjacent(int a, int b) const;
   /// Length of the diagonal of the rest positions' bounding box.
@@ -42,6 +45,8 @@ class TriangleMesh {
   std::vector<std::array<int, 3>> triangle_edges_;
   std::vector<int> vertex_triangle_offsets_;  // CSR: triangles of vertex v are
   std::vector<int> vertex_triangles_;         // [offsets[v], offsets[v + 1])
+  std::vector<int> edge_triangle_offsets_;    // likewise for edges
+  std::vector<int> edge_triangles_;
 };
 
 }  // namespace sscc

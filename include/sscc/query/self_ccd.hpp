@@ -43,11 +43,23 @@ struct TrianglePairContact {
 
 enum class SelfCcdMode : std::uint8_t {
   kAllContacts,  ///< every colliding pair and feature
-  kAnyHit,       ///< stop at the first contact found (pairs and features hold that one)
+  kAnyHit,       ///< stop at the first feature contact found: the report holds it and the
+                 ///< triangle pairs that contain it
+};
+
+/// How node boxes are bounded over the step.
+enum class NodeBounds : std::uint8_t {
+  /// Every vertex position at both ends (3Vr flops), then boxes refitted bottom-up: tight
+  /// whatever the deformation. The traditional query's default.
+  kRefit,
+  /// The O(r) subspace bounds of SubspaceBvh, vertex positions only where a leaf needs
+  /// them: cheap for small deformations, loose for large ones.
+  kSubspace,
 };
 
 struct SelfCcdOptions {
   SelfCcdMode mode = SelfCcdMode::kAllContacts;
+  NodeBounds bounds = NodeBounds::kRefit;
   ccd::CcdOptions kernel;
 };
 

@@ -1,0 +1,164 @@
+#include "selfccd_validation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "fcl_self_ccd.hpp"
+#include "sscc/ccd/kernels.hpp"
+#include "sscc/mesh/mesh_io.hpp"
+#include "sscc/model/basis_io.hpp"
+#include "sscc/model/polynomial_basis.hpp"
+#include "sscc/query/self_ccd.hpp"
+#include "trajectory.hpp"
+
+namespace sscc::validation {
+
+namespace {
+
+using PairList = std::vector<std::pair<int, int>>;
+
+struct MethodRun {
+  std::vector<PairList> pairs;           // per step
+  std::vector<SelfCcdReport> reports;    // per step, sscc methods only
+  std::vector<double> milliseconds;      // per step
+};
+
+SubspaceModel load_model(const SelfCcdValidationOptions& o, std::ostream& progress) {
+  MeshReadReport mesh_report;
+  TriangleMesh mesh = read_mesh(o.mesh, &mesh_report);
+  progress << "mesh " << o.mesh << ": " << mesh.vertex_count() << " vertices, "
+           << mesh.triangle_count() << " triangles (" << mesh_report.summary() << ")\n";
+  Eigen::MatrixXd basis;
+  const std::string prefix = "polynomial:";
+  if (o.basis.compare(0, prefix.size(), prefix) == 0) {
+    basis = polynomial_basis(mesh, std::stoi(o.basis.substr(prefix.size())));
+  } else {
+    basis = read_basis(o.basis);
+  }
+  const Eigen::VectorXd weights = o.weights.empty() ? Eigen::VectorXd::Ones(basis.cols())
+                                                    : read_weights(o.weights);
+  return SubspaceModel(std::move(mesh), basis, weights);
+}
+
+PairList pair_list(const SelfCcdReport& report) {
+  PairList pairs;
+  for (const auto& p : report.pairs) pairs.emplace_back(p.first, p.second);
+  return pairs;
+}
+
+/// Whether two triangles touch during the step, by the exact kernels on their 15 features.
+bool pair_touches(const SubspaceModel& model, const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
+                  int a, int b) {
+  const Eigen::VectorXd h0 = model.scaled_coordinates(q0);
+  const Eigen::VectorXd h1 = model.scaled_coordinates(q1);
+  const Triangle& ta = model.mesh().triangles()[a];
+  const Triangle& tb = model.mesh().triangles()[b];
+  const auto x0 = [&](int v) { return model.position(v, h0); };
+  const auto x1 = [&](int v) { return model.position(v, h1); };
+  for (int side = 0; side < 2; ++side) {
+    const Triangle& s = side == 0 ? ta : tb;
+    const Triangle& f = side == 0 ? tb : ta;
+    for (int v : s) {
+      if (ccd::vertex_face_ccd(x0(v), x0(f[0]), x0(f[1]), x0(f[2]), x1(v), x1(f[0]), x1(f[1]), x1(f[2])).hit) {
+        return true;
+      }
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const int a0 = ta[i], a1 = ta[(i + 1) % 3], b0 = tb[j], b1 = tb[(j + 1) % 3];
+      if (ccd::edge_edge_ccd(x0(a0), x0(a1), x0(b0), x0(b1), x1(a0), x1(a1), x1(b0), x1(b1)).hit) return true;
+    }
+  }
+  return false;
+}
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out, std::ostream& progress) {
+  const SubspaceModel model = load_model(o, progress);
+  const SubspaceBvh bvh(model);
+  const BvhBuildStats& build = bvh.build_stats();
+  progress << "bvh: " << build.nodes << " nodes, " << build.leaves << " leaves, depth " << build.depth
+           << ", built in " << build.seconds << " s\n";
+  const SelfCcd ccd(bvh);
+  const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed);
+  std::map<std::string, MethodRun> runs;
+  for (const std::string& method : o.methods) {
+    progress << "method " << method << ": " << o.steps << " steps\n";
+    MethodRun& run = runs[method];
+    std::unique_ptr<FclSelfCcd> fcl;
+    if (method == "fcl") fcl = std::make_unique<FclSelfCcd>(model.mesh());
+    for (int k = 0; k < o.steps; ++k) {
+      const auto start = std::chrono::steady_clock::now();
+      if (method == "traditional" || method == "exhaustive") {
+        run.reports.push_back(method == "traditional" ? ccd.query(q[k], q[k + 1])
+                                                      : ccd.query_exhaustive(q[k], q[k + 1]));
+        run.pairs.push_back(pair_list(run.reports.back()));
+      } else if (method == "fcl") {
+        run.pairs.push_back(fcl->step(model.deformed_positions(q[k]), model.deformed_positions(q[k + 1])));
+      } else {
+        throw std::invalid_argument("unknown method '" + method + "' (traditional, exhaustive, fcl)");
+      }
+      run.milliseconds.push_back(
+          1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    long colliding = 0, pairs = 0;
+    for (const PairList& p : run.pairs) colliding += !p.empty(), pairs += static_cast<long>(p.size());
+    double mean = 0.0;
+    for (double ms : run.milliseconds) mean += ms / o.steps;
+    char line[256];
+    std::snprintf(line, sizeof line, "%s selfccd: steps=%d colliding_steps=%ld pairs=%ld mean_ms=%.3f median_ms=%.3f",
+                  method.c_str(), o.steps, colliding, pairs, mean, median(run.milliseconds));
+    out << line << '\n';
+  }
+  long problems = 0;
+  for (std::size_t i = 0; i < o.methods.size(); ++i) {
+    for (std::size_t j = i + 1; j < o.methods.size(); ++j) {
+      const MethodRun& a = runs[o.methods[i]];
+      const MethodRun& b = runs[o.methods[j]];
+      const bool full = !a.reports.empty() && !b.reports.empty();
+      int identical = 0;
+      long false_positive = 0, false_negative = 0, unexplained = 0;
+      for (int k = 0; k < o.steps; ++k) {
+        const bool same = full ? a.reports[k].pairs == b.reports[k].pairs && a.reports[k].features == b.reports[k].features
+                               : a.pairs[k] == b.pairs[k];
+        identical += same;
+        if (same) continue;
+        if (full) {
+          ++problems;
+          continue;
+        }
+        // One side is FCL: the exact kernels decide each pair the two disagree on.
+        const bool a_is_fcl = o.methods[i] == "fcl";
+        const PairList& fcl_pairs = a_is_fcl ? a.pairs[k] : b.pairs[k];
+        const PairList& ours = a_is_fcl ? b.pairs[k] : a.pairs[k];
+        PairList only_fcl, only_ours;
+        std::set_difference(fcl_pairs.begin(), fcl_pairs.end(), ours.begin(), ours.end(), std::back_inserter(only_fcl));
+        std::set_difference(ours.begin(), ours.end(), fcl_pairs.begin(), fcl_pairs.end(), std::back_inserter(only_ours));
+        for (const auto& p : only_fcl) (pair_touches(model, q[k], q[k + 1], p.first, p.second) ? unexplained : false_positive)++;
+        for (const auto& p : only_ours) (pair_touches(model, q[k], q[k + 1], p.first, p.second) ? false_negative : unexplained)++;
+      }
+      out << "agreement " << o.methods[i] << " vs " << o.methods[j] << ": identical_steps=" << identical << "/"
+          << o.steps << '\n';
+      if (!full && identical != o.steps) {
+        out << "disagreements settled by the exact kernels (" << o.methods[i] << " vs " << o.methods[j]
+            << "): fcl_false_positive_pairs=" << false_positive << " fcl_false_negative_pairs=" << false_negative
+            << " unexplained=" << unexplained << '\n';
+        problems += unexplained;
+      }
+    }
+  }
+  return problems;
+}
+
+}  // namespace sscc::validation
