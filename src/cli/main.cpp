@@ -1,8 +1,13 @@
 // The sscc command-line tool: a thin shell over the library and its validation programs.
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "kernel_validation.hpp"
@@ -34,119 +39,98 @@ const char* kUsage =
   std::exit(2);
 }
 
-long parse_long(const std::string& flag, const std::string& value) {
-  try {
-    std::size_t used = 0;
-    const long v = std::stol(value, &used);
-    if (used != value.size() || v < 0) throw std::invalid_argument(value);
-    return v;
-  } catch (const std::exception&) {
-    usage_error(flag + " expects a non-negative integer, got '" + value + "'");
-  }
-}
-
-int run_kernels(const std::vector<std::string>& args) {
-  sscc::validation::KernelValidationOptions options;
+/// "--flag value" pairs and "--quiet", checked against the command's known flags.
+struct Flags {
   bool quiet = false;
+  std::map<std::string, std::string> values;
+
+  bool has(const std::string& flag) const { return values.count(flag) != 0; }
+  const std::string& text(const std::string& flag) const { return values.at(flag); }
+
+  /// A non-negative number: an integer when Number is integral.
+  template <typename Number>
+  Number number(const std::string& flag) const {
+    const std::string& value = text(flag);
+    try {
+      std::size_t used = 0;
+      const double v = std::is_integral<Number>::value ? static_cast<double>(std::stol(value, &used))
+                                                       : std::stod(value, &used);
+      if (used != value.size() || !(v >= 0.0)) throw std::invalid_argument(value);
+      return static_cast<Number>(v);
+    } catch (const std::exception&) {
+      usage_error(flag + " expects a non-negative " +
+                  (std::is_integral<Number>::value ? "integer" : "number") + ", got '" + value + "'");
+    }
+  }
+};
+
+Flags parse_flags(const std::vector<std::string>& args, const std::set<std::string>& known,
+                  const std::string& command) {
+  Flags flags;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& flag = args[i];
     if (flag == "--quiet") {
-      quiet = true;
+      flags.quiet = true;
       continue;
     }
-    if (i + 1 >= args.size()) usage_error(flag + " needs a value (or is not an option)");
-    const std::string& value = args[++i];
-    if (flag == "--queries") {
-      options.queries_dir = value;
-    } else if (flag == "--random") {
-      options.random = parse_long(flag, value);
-    } else if (flag == "--seed") {
-      options.seed = static_cast<std::uint64_t>(parse_long(flag, value));
-    } else if (flag == "--output") {
-      options.output_dir = value;
-    } else if (flag == "--repeats") {
-      options.repeats = static_cast<int>(parse_long(flag, value));
-    } else {
-      usage_error("unknown option '" + flag + "' for 'kernels'");
-    }
+    if (known.count(flag) == 0) usage_error("unknown option '" + flag + "' for '" + command + "'");
+    if (i + 1 >= args.size()) usage_error(flag + " needs a value");
+    flags.values[flag] = args[++i];
   }
-  if (options.queries_dir.empty() && options.random == 0) {
-    usage_error("kernels needs --queries DIR or --random N");
-  }
+  return flags;
+}
+
+/// Runs a report with progress on standard error unless quiet; non-zero exit on problems.
+template <typename Options, typename Report>
+int run_report(const Options& options, bool quiet, Report report, const std::string& command) {
   std::ostream null_stream(nullptr);
-  const long problems =
-      sscc::validation::run_kernel_validation(options, std::cout, quiet ? null_stream : std::cerr);
+  const long problems = report(options, std::cout, quiet ? null_stream : std::cerr);
   if (problems != 0) {
-    std::cerr << "sscc kernels: " << problems << " disagreements with the ground truth\n";
+    std::cerr << "sscc " << command << ": " << problems << " disagreements\n";
     return 1;
   }
   return 0;
+}
+
+int run_kernels(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args, {"--queries", "--random", "--seed", "--output", "--repeats"}, "kernels");
+  sscc::validation::KernelValidationOptions options;
+  if (flags.has("--queries")) options.queries_dir = flags.text("--queries");
+  if (flags.has("--random")) options.random = flags.number<long>("--random");
+  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
+  if (flags.has("--output")) options.output_dir = flags.text("--output");
+  if (flags.has("--repeats")) options.repeats = flags.number<int>("--repeats");
+  if (options.queries_dir.empty() && options.random == 0) {
+    usage_error("kernels needs --queries DIR or --random N");
+  }
+  return run_report(options, flags.quiet, sscc::validation::run_kernel_validation, "kernels");
 }
 
 std::vector<std::string> split_list(const std::string& list) {
   std::vector<std::string> items;
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    const std::size_t comma = list.find(',', start);
-    const std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
     if (!item.empty()) items.push_back(item);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
   }
   return items;
 }
 
-double parse_double(const std::string& flag, const std::string& value) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(value, &used);
-    if (used != value.size() || !(v >= 0.0)) throw std::invalid_argument(value);
-    return v;
-  } catch (const std::exception&) {
-    usage_error(flag + " expects a non-negative number, got '" + value + "'");
-  }
-}
-
 int run_selfccd(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(
+      args, {"--mesh", "--basis", "--weights", "--steps", "--amplitude", "--seed", "--methods"}, "selfccd");
   sscc::validation::SelfCcdValidationOptions options;
-  bool quiet = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& flag = args[i];
-    if (flag == "--quiet") {
-      quiet = true;
-      continue;
-    }
-    if (i + 1 >= args.size()) usage_error(flag + " needs a value (or is not an option)");
-    const std::string& value = args[++i];
-    if (flag == "--mesh") {
-      options.mesh = value;
-    } else if (flag == "--basis") {
-      options.basis = value;
-    } else if (flag == "--weights") {
-      options.weights = value;
-    } else if (flag == "--steps") {
-      options.steps = static_cast<int>(parse_long(flag, value));
-    } else if (flag == "--amplitude") {
-      options.amplitude = parse_double(flag, value);
-    } else if (flag == "--seed") {
-      options.seed = static_cast<std::uint64_t>(parse_long(flag, value));
-    } else if (flag == "--methods") {
-      options.methods = split_list(value);
-    } else {
-      usage_error("unknown option '" + flag + "' for 'selfccd'");
-    }
-  }
-  if (options.mesh.empty()) usage_error("selfccd needs --mesh FILE");
+  if (!flags.has("--mesh")) usage_error("selfccd needs --mesh FILE");
+  options.mesh = flags.text("--mesh");
+  if (flags.has("--basis")) options.basis = flags.text("--basis");
+  if (flags.has("--weights")) options.weights = flags.text("--weights");
+  if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
+  if (flags.has("--amplitude")) options.amplitude = flags.number<double>("--amplitude");
+  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
+  if (flags.has("--methods")) options.methods = split_list(flags.text("--methods"));
   if (options.steps <= 0) usage_error("--steps must be positive");
   if (options.methods.empty()) usage_error("--methods needs at least one method");
-  std::ostream null_stream(nullptr);
-  const long problems =
-      sscc::validation::run_selfccd_validation(options, std::cout, quiet ? null_stream : std::cerr);
-  if (problems != 0) {
-    std::cerr << "sscc selfccd: " << problems << " disagreements\n";
-    return 1;
-  }
-  return 0;
+  return run_report(options, flags.quiet, sscc::validation::run_selfccd_validation, "selfccd");
 }
 
 }  // namespace
