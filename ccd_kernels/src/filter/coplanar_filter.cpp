@@ -235,10 +235,10 @@ bool refine_first_root(Cubic f, double t0, double t1, int depth, double toleranc
 }
 
 /// The 2D orientations of the coordinate plane that drops axis k (four_point_motion.hpp).
-void set_plane(PrimitivePair pair, const Vec3 (&e)[3][2], int k, Piece& piece) {
+/// q23 is e2 x e3's component k, which the cubic has already computed.
+void set_plane(PrimitivePair pair, const Vec3 (&e)[3][2], int k, const Quadratic& q23, Piece& piece) {
   const Quadratic q12 = CrossProductMotion{e[0][0], e[0][1], e[1][0], e[1][1]}.component(k);
   const Quadratic q13 = CrossProductMotion{e[0][0], e[0][1], e[2][0], e[2][1]}.component(k);
-  const Quadratic q23 = CrossProductMotion{e[1][0], e[1][1], e[2][0], e[2][1]}.component(k);
   const Quadratic mixed = q12 + q23 - q13;
   auto& o = piece.orientation[k];
   if (pair == PrimitivePair::kVertexFace) {
@@ -290,7 +290,7 @@ FilterOutcome run_coplanar_filter(const FourPointMotion& motion, double toi_tole
   const int orientation_signs = orientation_count(motion.pair);
   const double root_error = bounds.orientation(0);
   for (int k : plane_order(motion.pair, e)) {
-    set_plane(motion.pair, e, k, root);
+    set_plane(motion.pair, e, k, {{k23_00[k], 0.5 * mixed23[k], k23_11[k]}}, root);
     int signs[4] = {0, 0, 0, 0};
     for (int i = 0; i < orientation_signs; ++i) {
       signs[i] = root.orientation[k][i].certain_sign_on_piece(root_error);
