@@ -79,8 +79,8 @@ class StepContext {
     const Triangle& ta = mesh_.triangles()[a];
     const Triangle& tb = mesh_.triangles()[b];
     for (int i = 0; i < 3; ++i) {
-      if (point_box(ta[i]).overlaps(box_b) && vertex_face_owner(ta[i], b) == pair) vertex_face(ta[i], b);
-      if (point_box(tb[i]).overlaps(box_a) && vertex_face_owner(tb[i], a) == pair) vertex_face(tb[i], a);
+      if (point_box(ta[i]).overlaps(box_b) && owns_vertex_face(a, ta[i], b)) vertex_face(ta[i], b);
+      if (point_box(tb[i]).overlaps(box_a) && owns_vertex_face(b, tb[i], a)) vertex_face(tb[i], a);
     }
     for (int i = 0; i < 3; ++i) {
       const int e = mesh_.triangle_edges(a)[i];
@@ -155,13 +155,14 @@ class StepContext {
     return box_of(x0_, x1_, mesh_.triangles()[t]);
   }
 
-  /// The smallest non-adjacent triangle pair containing vertex v and triangle f.
-  std::pair<int, int> vertex_face_owner(int v, int f) const {
-    std::pair<int, int> owner{INT_MAX, INT_MAX};
-    for (const int* t = mesh_.triangles_of_vertex_begin(v); t != mesh_.triangles_of_vertex_end(v); ++t) {
-      if (!mesh_.adjacent(*t, f)) owner = std::min(owner, std::make_pair(std::min(*t, f), std::max(*t, f)));
+  /// Whether triangle t owns the vertex-face pair (v, f), v in t: the smallest non-adjacent
+  /// pair containing it is (t', f) for the smallest t' around v not adjacent to f (pairs
+  /// order by their smaller member, and f is fixed), so the first such t' decides.
+  bool owns_vertex_face(int t, int v, int f) const {
+    for (const int* u = mesh_.triangles_of_vertex_begin(v); u != mesh_.triangles_of_vertex_end(v); ++u) {
+      if (!mesh_.adjacent(*u, f)) return *u == t;
     }
-    return owner;
+    return false;
   }
 
   /// The smallest non-adjacent triangle pair containing edges e and g.
