@@ -1,6 +1,7 @@
 #include "sscc/query/self_ccd.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <tuple>
@@ -40,6 +41,28 @@ Aabb box_of(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vec
   return box;
 }
 
+/// Node boxes computed on first use (each at most once per query).
+class LazyBoxes {
+ public:
+  explicit LazyBoxes(std::size_t nodes) : boxes_(nodes), known_(nodes, 0) {}
+  template <typename Compute>
+  const Aabb& get(int n, Compute compute) {
+    if (!known_[n]) {
+      boxes_[n] = compute(n);
+      known_[n] = 1;
+    }
+    return boxes_[n];
+  }
+
+ private:
+  std::vector<Aabb> boxes_;
+  std::vector<char> known_;
+};
+
+Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
+Aabb shifted(const Aabb& a, const Eigen::Vector3d& by) { return {a.lo - by, a.hi - by}; }
+Eigen::Vector3d centre(const Aabb& a) { return 0.5 * (a.lo + a.hi); }
+
 /// What every query needs per call: the positions computed so far, the feature results,
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
@@ -54,13 +77,26 @@ class StepContext {
         s_(std::max(q_hat0_.norm(), q_hat1_.norm())),
         x0_(mesh_.vertex_count()),
         x1_(mesh_.vertex_count()),
-        computed_(mesh_.vertex_count(), 0) {
+        computed_(mesh_.vertex_count(), 0),
+        subspace_boxes_(bvh.nodes().size()) {
     if (options.bounds == NodeBounds::kRefit) refit();
   }
 
-  Aabb node_box(int n) {
+  /// Whether two nodes may hold touching triangles. With refitted boxes the test is also
+  /// made in the nodes' common moving frame: their mean displacement taken out of both
+  /// (contact is unchanged by a translation, linear in t, applied to both).
+  bool nodes_overlap(int a, int b) {
     ++stats_.box_tests;
-    return options_.bounds == NodeBounds::kRefit ? refitted_[n] : bvh_.swept_box(n, q_hat0_, q_hat1_, s_);
+    if (options_.bounds == NodeBounds::kSubspace) {
+      const auto swept = [&](int n) { return bvh_.swept_box(n, q_hat0_, q_hat1_, s_); };
+      return subspace_boxes_.get(a, swept).overlaps(subspace_boxes_.get(b, swept));
+    }
+    const std::array<Aabb, 2>& ea = end_boxes_[a];
+    const std::array<Aabb, 2>& eb = end_boxes_[b];
+    if (!hull(ea[0], ea[1]).overlaps(hull(eb[0], eb[1]))) return false;
+    const Eigen::Vector3d common =
+        0.5 * ((centre(ea[1]) - centre(ea[0])) + (centre(eb[1]) - centre(eb[0])));
+    return hull(ea[0], shifted(ea[1], common)).overlaps(hull(eb[0], shifted(eb[1], common)));
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
@@ -70,10 +106,10 @@ class StepContext {
   /// non-adjacent pair of triangles containing it. Whenever the feature's boxes overlap,
   /// every triangle and node box containing them overlaps too, so the owner is visited.
   void test_triangle_pair(int a, int b) {
-    if (stop_ || mesh_.adjacent(a, b)) return;
+    if (stop_) return;
     const Aabb box_a = triangle_box(a);
     const Aabb box_b = triangle_box(b);
-    if (!box_a.overlaps(box_b) || apart_in_common_frame(a, b)) return;
+    if (!box_a.overlaps(box_b) || mesh_.adjacent(a, b) || apart_in_common_frame(a, b)) return;
     ++stats_.triangle_pairs;
     const std::pair<int, int> pair{std::min(a, b), std::max(a, b)};
     const Triangle& ta = mesh_.triangles()[a];
@@ -99,8 +135,8 @@ class StepContext {
   }
 
  private:
-  /// All positions, the triangles' and edges' swept boxes, then the nodes' bottom-up
-  /// (children come after their parent).
+  /// All positions, the triangles' and edges' swept boxes, then the nodes' boxes at both
+  /// ends, bottom-up (children come after their parent).
   void refit() {
     for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
     triangle_boxes_.resize(mesh_.triangle_count());
@@ -108,22 +144,24 @@ class StepContext {
     edge_boxes_.resize(mesh_.edges().size());
     for (std::size_t e = 0; e < mesh_.edges().size(); ++e) edge_boxes_[e] = segment_box(mesh_.edges()[e]);
     const auto& nodes = bvh_.nodes();
-    refitted_.resize(nodes.size());
+    end_boxes_.resize(nodes.size());
+    const Aabb empty{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
     for (int n = static_cast<int>(nodes.size()) - 1; n >= 0; --n) {
       const SubspaceBvh::Node& node = nodes[n];
-      Aabb& box = refitted_[n];
-      box = {Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
+      std::array<Aabb, 2>& box = end_boxes_[n];
+      box = {empty, empty};
       if (node.is_leaf()) {
         for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
-          const Aabb& t = triangle_boxes_[bvh_.triangle_order()[i]];
-          box.lo = box.lo.cwiseMin(t.lo);
-          box.hi = box.hi.cwiseMax(t.hi);
+          for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) {
+            box[0] = hull(box[0], {x0_[v], x0_[v]});
+            box[1] = hull(box[1], {x1_[v], x1_[v]});
+          }
         }
         continue;
       }
       for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
-        box.lo = box.lo.cwiseMin(refitted_[c].lo);
-        box.hi = box.hi.cwiseMax(refitted_[c].hi);
+        box[0] = hull(box[0], end_boxes_[c][0]);
+        box[1] = hull(box[1], end_boxes_[c][1]);
       }
     }
   }
@@ -256,7 +294,9 @@ class StepContext {
   double s_;
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
-  std::vector<Aabb> refitted_, triangle_boxes_, edge_boxes_;
+  std::vector<std::array<Aabb, 2>> end_boxes_;  // per node, at t = 0 and t = 1
+  std::vector<Aabb> triangle_boxes_, edge_boxes_;
+  LazyBoxes subspace_boxes_;
   std::vector<FeatureContact> feature_hits_;
   SelfCcdStats stats_;
   bool stop_ = false;
@@ -267,10 +307,7 @@ class StepContext {
 template <typename Context>
 class Traversal {
  public:
-  Traversal(const SubspaceBvh& bvh, Context& context) : bvh_(bvh), context_(context) {
-    boxes_.resize(bvh.nodes().size());
-    known_.assign(bvh.nodes().size(), 0);
-  }
+  Traversal(const SubspaceBvh& bvh, Context& context) : bvh_(bvh), context_(context) {}
 
   void intra(int n) {
     if (context_.stopped()) return;
@@ -289,7 +326,7 @@ class Traversal {
   }
 
   void inter(int a, int b) {
-    if (context_.stopped() || !box(a).overlaps(box(b))) return;
+    if (context_.stopped() || !context_.nodes_overlap(a, b)) return;
     ++context_.stats().nodes_visited;
     const SubspaceBvh::Node& na = bvh_.nodes()[a];
     const SubspaceBvh::Node& nb = bvh_.nodes()[b];
@@ -309,13 +346,6 @@ class Traversal {
   }
 
  private:
-  const Aabb& box(int n) {
-    if (!known_[n]) {
-      boxes_[n] = context_.node_box(n);
-      known_[n] = 1;
-    }
-    return boxes_[n];
-  }
   void pair(int i, int j) {
     const std::vector<int>& order = bvh_.triangle_order();
     context_.test_triangle_pair(order[i], order[j]);
@@ -323,8 +353,6 @@ class Traversal {
 
   const SubspaceBvh& bvh_;
   Context& context_;
-  std::vector<Aabb> boxes_;
-  std::vector<char> known_;
 };
 
 /// Discrete variant: boxes at one configuration, exact triangle-triangle tests.
@@ -332,11 +360,12 @@ class DiscreteContext {
  public:
   DiscreteContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q, const SelfCcdOptions& options)
       : bvh_(bvh), options_(options), q_hat_(bvh.model().scaled_coordinates(q)), norm_(q_hat_.norm()),
-        x_(bvh.model().mesh().vertex_count()), computed_(x_.size(), 0) {}
+        x_(bvh.model().mesh().vertex_count()), computed_(x_.size(), 0), boxes_(bvh.nodes().size()) {}
 
-  Aabb node_box(int n) {
+  bool nodes_overlap(int a, int b) {
     ++stats_.box_tests;
-    return bvh_.box(n, q_hat_, norm_);
+    const auto at_q = [&](int n) { return bvh_.box(n, q_hat_, norm_); };
+    return boxes_.get(a, at_q).overlaps(boxes_.get(b, at_q));
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
@@ -376,6 +405,7 @@ class DiscreteContext {
   std::vector<Eigen::Vector3d> x_;
   std::vector<char> computed_;
   std::vector<TrianglePairContact> pairs_;
+  LazyBoxes boxes_;
   SelfCcdStats stats_;
   bool stop_ = false;
 };
