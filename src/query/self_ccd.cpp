@@ -130,6 +130,13 @@ class StepContext {
   }
 
   SelfCcdReport finish(std::chrono::steady_clock::time_point start) {
+    if (options_.mode == SelfCcdMode::kEarliest && !feature_hits_.empty()) {
+      double earliest = 1.0;
+      for (const FeatureContact& c : feature_hits_) earliest = std::min(earliest, c.toi);
+      feature_hits_.erase(std::remove_if(feature_hits_.begin(), feature_hits_.end(),
+                                         [&](const FeatureContact& c) { return c.toi != earliest; }),
+                          feature_hits_.end());
+    }
     std::vector<TrianglePairContact> pairs = pairs_from_features();  // before the move below
     return sorted_report(std::move(pairs), std::move(feature_hits_), stats_, start);
   }

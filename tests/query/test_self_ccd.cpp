@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <random>
+#include <thread>
 
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/model/polynomial_basis.hpp"
@@ -126,6 +127,43 @@ TEST_CASE("self-CCD: the traversal reports exactly what exhaustive testing does"
   }
   CHECK(colliding >= 4);
   CHECK(quiet >= 4);
+}
+
+TEST_CASE("self-CCD: earliest-only mode and concurrent queries", "[query]") {
+  const Fixture f;
+  std::mt19937_64 rng(24);
+  std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> steps;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::VectorXd q0 = random_q(rng, 0.5);
+    steps.emplace_back(q0, q0 + random_q(rng, 0.5));
+  }
+  std::vector<sscc::SelfCcdReport> serial;
+  for (const auto& [q0, q1] : steps) serial.push_back(f.ccd.query(q0, q1));
+  int collided = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    sscc::SelfCcdOptions earliest;
+    earliest.mode = sscc::SelfCcdMode::kEarliest;
+    const sscc::SelfCcdReport first = f.ccd.query(steps[i].first, steps[i].second, earliest);
+    REQUIRE(first.collided() == serial[i].collided());
+    if (!first.collided()) continue;
+    ++collided;
+    CHECK(first.earliest_toi == serial[i].earliest_toi);
+    for (const auto& c : first.features) CHECK(c.toi == serial[i].earliest_toi);
+    for (const auto& p : first.pairs) CHECK(p.toi == serial[i].earliest_toi);
+  }
+  CHECK(collided >= 2);
+  // Two threads querying the same detector get the serial answers.
+  std::vector<sscc::SelfCcdReport> parallel(steps.size());
+  const auto worker = [&](std::size_t begin) {
+    for (std::size_t i = begin; i < steps.size(); i += 2) parallel[i] = f.ccd.query(steps[i].first, steps[i].second);
+  };
+  std::thread other(worker, 1);
+  worker(0);
+  other.join();
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    CHECK(parallel[i].pairs == serial[i].pairs);
+    CHECK(parallel[i].features == serial[i].features);
+  }
 }
 
 TEST_CASE("self-CCD: discrete query against all pairs", "[query]") {

@@ -43,6 +43,7 @@ struct TrianglePairContact {
 
 enum class SelfCcdMode : std::uint8_t {
   kAllContacts,  ///< every colliding pair and feature
+  kEarliest,     ///< only the features at the earliest time of impact and their pairs
   kAnyHit,       ///< stop at the first feature contact found: the report holds it and the
                  ///< triangle pairs that contain it
 };
