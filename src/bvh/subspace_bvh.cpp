@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace sscc {
 
@@ -22,6 +23,7 @@ double squared_distance(const double* a, const double* b, int dims) {
 SubspaceBvh::SubspaceBvh(const SubspaceModel& model, std::uint64_t seed) : model_(model) {
   const auto start = std::chrono::steady_clock::now();
   const TriangleMesh& mesh = model.mesh();
+  if (mesh.triangle_count() == 0) throw std::invalid_argument("SubspaceBvh: the mesh has no triangles");
   const int r = model.mode_count();
   const int dims = 3 + 3 * r;
   feature_.assign(static_cast<std::size_t>(mesh.triangle_count()) * dims, 0.0);
@@ -223,8 +225,8 @@ std::string SubspaceBvh::validate(int samples, double max_norm, std::uint64_t se
   for (int sample = 0; sample < samples; ++sample) {
     Eigen::VectorXd q_hat(r);
     for (int j = 0; j < r; ++j) q_hat[j] = normal(rng);
-    q_hat *= max_norm * uniform(rng) / q_hat.norm();
-    const double norm = q_hat.norm();
+    q_hat *= max_norm * uniform(rng) / q_hat.stableNorm();
+    const double norm = q_hat.stableNorm();
     std::vector<Eigen::Vector3d> x(mesh.vertex_count());
     for (int v = 0; v < mesh.vertex_count(); ++v) x[v] = model_.position(v, q_hat);
     for (int n = 0; n < static_cast<int>(nodes_.size()); ++n) {

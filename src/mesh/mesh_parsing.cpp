@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace sscc::mesh_parsing {
@@ -10,9 +11,8 @@ namespace sscc::mesh_parsing {
 bool LineReader::next(std::string& line, char comment) {
   while (std::getline(in_, line)) {
     ++line_;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos) continue;
+    const auto first = line.find_first_not_of(" \t\r\n\f\v");
+    if (first == std::string::npos) continue;  // blank, whatever the white space
     if (comment != 0 && line[first] == comment) continue;
     return true;
   }
@@ -42,6 +42,14 @@ long parse_integer(const std::string& token, const LineReader& reader) {
     reader.fail("'" + token + "' is not an integer");
   }
   return value;
+}
+
+int parse_index(const std::string& token, const LineReader& reader) {
+  const long value = parse_integer(token, reader);
+  if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
+    reader.fail("index '" + token + "' is out of range");
+  }
+  return static_cast<int>(value);
 }
 
 std::vector<std::string> split(const std::string& line) {

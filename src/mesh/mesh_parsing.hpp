@@ -22,8 +22,8 @@ struct RawMesh {
 class LineReader {
  public:
   LineReader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
-  /// The next line that is neither blank nor a comment starting with `comment` (0: none),
-  /// or false at the end of the file.
+  /// The next line that is neither blank (white space only) nor a comment starting with
+  /// `comment` (0: none), or false at the end of the file. A returned line has a token.
   bool next(std::string& line, char comment);
   int line_number() const { return line_; }
   const std::string& file() const { return file_; }
@@ -38,6 +38,8 @@ class LineReader {
 
 double parse_coordinate(const std::string& token, const LineReader& reader);
 long parse_integer(const std::string& token, const LineReader& reader);
+/// An integer that fits in an int (vertex indices, list lengths).
+int parse_index(const std::string& token, const LineReader& reader);
 std::vector<std::string> split(const std::string& line);
 
 RawMesh read_off(LineReader& reader);

@@ -1,6 +1,8 @@
 // OBJ: "v x y z [w]" and "f a b c ..." where each corner is "i", "i/t", "i//n" or "i/t/n",
 // 1-based, or negative (relative to the vertices read so far). Other statements (normals,
 // texture coordinates, groups, materials, lines) are ignored.
+#include <limits>
+
 #include "mesh/mesh_parsing.hpp"
 
 namespace sscc::mesh_parsing {
@@ -19,9 +21,10 @@ RawMesh read_obj(LineReader& reader) {
       if (tokens.size() < 4) reader.fail("a face needs at least three vertices");
       std::vector<int> face;
       for (std::size_t i = 1; i < tokens.size(); ++i) {
-        const long index = parse_integer(tokens[i].substr(0, tokens[i].find('/')), reader);
+        const long index = parse_index(tokens[i].substr(0, tokens[i].find('/')), reader);
         if (index == 0) reader.fail("OBJ vertex indices start at 1 (found 0)");
         const long resolved = index > 0 ? index - 1 : static_cast<long>(mesh.vertices.size()) + index;
+        if (resolved < 0 || resolved > std::numeric_limits<int>::max()) reader.fail("vertex index out of range");
         face.push_back(static_cast<int>(resolved));
       }
       mesh.faces.push_back(std::move(face));

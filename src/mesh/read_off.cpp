@@ -19,7 +19,6 @@ RawMesh read_off(LineReader& reader) {
   const long face_count = parse_integer(tokens[1], reader);
   if (vertex_count < 0 || face_count < 0) reader.fail("negative count");
   RawMesh mesh;
-  mesh.vertices.reserve(vertex_count);
   for (long v = 0; v < vertex_count; ++v) {
     if (!reader.next(line, '#')) {
       reader.fail("file ends after " + std::to_string(v) + " of " +
@@ -37,11 +36,11 @@ RawMesh read_off(LineReader& reader) {
                   " faces");
     }
     tokens = split(line);
-    const long n = parse_integer(tokens[0], reader);
+    const int n = parse_index(tokens[0], reader);
     if (n < 3) reader.fail("a face needs at least three vertices, this one has " + std::to_string(n));
-    if (static_cast<long>(tokens.size()) < n + 1) reader.fail("face lists fewer indices than its count");
+    if (tokens.size() - 1 < static_cast<std::size_t>(n)) reader.fail("face lists fewer indices than its count");
     std::vector<int> face;
-    for (long i = 1; i <= n; ++i) face.push_back(static_cast<int>(parse_integer(tokens[i], reader)));
+    for (int i = 1; i <= n; ++i) face.push_back(parse_index(tokens[i], reader));
     mesh.faces.push_back(std::move(face));
     mesh.face_lines.push_back(reader.line_number());
   }

@@ -2,6 +2,8 @@
 // element's vertex_indices (or vertex_index) list; other elements and properties are read
 // past and ignored.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
@@ -134,14 +136,23 @@ RawMesh read_ply(LineReader& reader) {
   RawMesh mesh;
   ValueSource values(reader, format);
   for (const Element& e : elements) {
+    if (e.properties.empty()) continue;  // nothing to read, however many there are
     for (long i = 0; i < e.count; ++i) {
       Eigen::Vector3d position = Eigen::Vector3d::Zero();
       for (const Property& p : e.properties) {
         if (p.is_list) {
           const double n = values.read(p.count_type);
-          if (n < 0 || n != static_cast<long>(n)) reader.fail("bad list length");
+          if (!(n >= 0 && n <= std::numeric_limits<int>::max()) || n != std::floor(n)) {
+            reader.fail("bad list length");
+          }
           std::vector<int> items;
-          for (long k = 0; k < static_cast<long>(n); ++k) items.push_back(static_cast<int>(values.read(p.type)));
+          for (long k = 0; k < static_cast<long>(n); ++k) {
+            const double item = values.read(p.type);
+            if (item != std::floor(item) || std::fabs(item) > std::numeric_limits<int>::max()) {
+              reader.fail("list item is not an index");
+            }
+            items.push_back(static_cast<int>(item));
+          }
           if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index")) {
             if (items.size() < 3) reader.fail("a face needs at least three vertices");
             mesh.faces.push_back(std::move(items));

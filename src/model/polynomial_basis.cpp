@@ -12,6 +12,7 @@ Eigen::MatrixXd polynomial_basis(const TriangleMesh& mesh, int modes) {
                                 std::to_string(kMaxPolynomialModes));
   }
   const int n = mesh.vertex_count();
+  if (n == 0) throw std::invalid_argument("polynomial_basis: the mesh has no vertices");
   Eigen::Vector3d lo = mesh.vertices()[0];
   Eigen::Vector3d hi = lo;
   for (const auto& p : mesh.vertices()) {

@@ -30,6 +30,9 @@ SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis,
     }
   }
   scaled_basis_ = basis * weights_.cwiseSqrt().cwiseInverse().asDiagonal();
+  if (!all_finite(scaled_basis_)) {
+    throw std::invalid_argument("SubspaceModel: basis / sqrt(weight) overflows; a weight is too small");
+  }
 }
 
 Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) const {
@@ -43,11 +46,15 @@ Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) cons
       throw std::invalid_argument("SubspaceModel: q[" + std::to_string(i) + "] is not finite");
     }
   }
-  return weights_.cwiseSqrt().cwiseProduct(q);
+  Eigen::VectorXd q_hat = weights_.cwiseSqrt().cwiseProduct(q);
+  if (!all_finite(q_hat) || !std::isfinite(q_hat.stableNorm())) {
+    throw std::invalid_argument("SubspaceModel: q scaled by the weights overflows");
+  }
+  return q_hat;
 }
 
 double SubspaceModel::weighted_norm(const Eigen::VectorXd& q) const {
-  return scaled_coordinates(q).norm();
+  return scaled_coordinates(q).stableNorm();
 }
 
 std::vector<Eigen::Vector3d> SubspaceModel::deformed_positions(const Eigen::VectorXd& q) const {

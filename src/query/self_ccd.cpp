@@ -74,7 +74,7 @@ class StepContext {
         options_(options),
         q_hat0_(bvh.model().scaled_coordinates(q0)),
         q_hat1_(bvh.model().scaled_coordinates(q1)),
-        s_(std::max(q_hat0_.norm(), q_hat1_.norm())),
+        s_(std::max(q_hat0_.stableNorm(), q_hat1_.stableNorm())),
         x0_(mesh_.vertex_count()),
         x1_(mesh_.vertex_count()),
         computed_(mesh_.vertex_count(), 0),
@@ -366,7 +366,7 @@ class Traversal {
 class DiscreteContext {
  public:
   DiscreteContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q, const SelfCcdOptions& options)
-      : bvh_(bvh), options_(options), q_hat_(bvh.model().scaled_coordinates(q)), norm_(q_hat_.norm()),
+      : bvh_(bvh), options_(options), q_hat_(bvh.model().scaled_coordinates(q)), norm_(q_hat_.stableNorm()),
         x_(bvh.model().mesh().vertex_count()), computed_(x_.size(), 0), boxes_(bvh.nodes().size()) {}
 
   bool nodes_overlap(int a, int b) {

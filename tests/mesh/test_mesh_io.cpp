@@ -167,6 +167,37 @@ TEST_CASE("bad files are refused with the file, the line and the problem", "[mes
   CHECK_THROWS_WITH(sscc::read_mesh("/nonexistent/x.off"), Catch::Contains("cannot open"));
 }
 
+TEST_CASE("hostile files end in an error, not a crash or a hang", "[mesh]") {
+  const auto error_of = [](const std::string& name, const std::string& content) {
+    try {
+      sscc::read_mesh(scratch_file(name, content));
+    } catch (const sscc::MeshFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // Lines of form feeds or carriage returns only are blank lines.
+  CHECK(sscc::read_mesh(scratch_file("ff.off", "OFF\n\f\n3 1 0\n0 0 0\n\r\r\n1 0 0\n0 1 0\n3 0 1 2\n"))
+            .triangle_count() == 1);
+  CHECK(sscc::read_mesh(scratch_file("cr.obj", "v 0 0 0\n\v\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).triangle_count() == 1);
+  CHECK_THAT(error_of("huge.off", "OFF\n100000000000 1 0\n0 0 0\n"), Catch::Contains("file ends after 1 of"));
+  CHECK_THAT(error_of("trunc.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967296\n"),
+             Catch::Contains("out of range"));
+  CHECK_THAT(error_of("trunc.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n"), Catch::Contains("out of range"));
+  CHECK_THAT(error_of("count.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n9223372036854775807 0 1 2\n"),
+             Catch::Contains("out of range"));
+  const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\n";
+  CHECK_THAT(error_of("frac.ply", ply_head + "element face 1\nproperty list uchar float vertex_indices\n"
+                                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n"),
+             Catch::Contains("not an index"));
+  // An element without properties has nothing to read, however large its count.
+  CHECK(sscc::read_mesh(scratch_file("empty.ply", ply_head + "element nothing 9223372036854775807\n"
+                                                   "element face 1\nproperty list uchar int vertex_indices\n"
+                                                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+            .triangle_count() == 1);
+}
+
 TEST_CASE("the real meshes beside the repository load", "[mesh]") {
   const fs::path meshes = fs::path(SSCC_SOURCE_DIR) / ".." / "shared" / "data" / "meshes";
   if (!fs::is_directory(meshes)) {

@@ -195,6 +195,37 @@ TEST_CASE("self-CCD: discrete query against all pairs", "[query]") {
   CHECK(intersecting >= 2);
 }
 
+TEST_CASE("self-CCD: huge coordinates with tiny modes keep every bound finite", "[query]") {
+  // ||q_hat||^2 overflows a double here; the bounds must not turn into NaN and cull.
+  std::vector<Eigen::Vector3d> x;
+  std::vector<sscc::Triangle> t;
+  for (int i = 0; i < 8; ++i) {
+    const int b = static_cast<int>(x.size());
+    x.push_back({1.0 * i, 0, 0});
+    x.push_back({i + 0.5, 0, 0});
+    x.push_back({1.0 * i, 0.5, 0});
+    t.push_back({b, b + 1, b + 2});
+  }
+  const sscc::TriangleMesh mesh(x, t);
+  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(3 * 24, 1);
+  for (int v = 0; v < 24; ++v) {
+    if ((v / 3) % 2) u(3 * v, 0) = -1e-160;  // odd triangles slide onto the even ones
+  }
+  const sscc::SubspaceModel model(mesh, u, Eigen::VectorXd::Ones(1));
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd detector(bvh);
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(1);
+  const Eigen::VectorXd q1 = Eigen::VectorXd::Constant(1, 1e160);
+  const auto expected = detector.query_exhaustive(q0, q1).pairs;
+  CHECK(expected.size() == 4);
+  for (auto bounds : {sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
+    sscc::SelfCcdOptions options;
+    options.bounds = bounds;
+    CHECK(detector.query(q0, q1, options).pairs == expected);
+  }
+  CHECK(detector.query_discrete(q1).pairs.size() == 4);
+}
+
 TEST_CASE("self-CCD: a step that does not move reports nothing, bad q is refused", "[query]") {
   const Fixture f;
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(27);

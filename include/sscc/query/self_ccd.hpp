@@ -1,9 +1,12 @@
 // Continuous self-collision detection of a subspace model over one time step: the straight
 // line q(t) = (1 - t) q0 + t q1, t in [0, 1], along which every vertex moves linearly.
 //
-// Reported: the non-adjacent triangle pairs (no shared vertex) that touch at some t, their
-// vertex-face and edge-edge feature contacts with times of impact, and the earliest time
-// of impact. Guarantee: exact for the vertex positions as computed in floating point,
+// Reported: the non-adjacent triangle pairs (no shared vertex) that come into contact
+// during the step, found through their vertex-face and edge-edge feature contacts (with
+// times of impact), and the earliest time of impact. As in all continuous collision
+// detection, the step is assumed to start free of intersections: two triangles that
+// already interpenetrate at t = 0 and stay so without a feature contact are not reported
+// (query_discrete(q0) finds them). Guarantee: exact for the vertex positions as computed in floating point,
 // x = p + U_hat q_hat (the leaf kernels are exact; the node bounds are conservative, with a
 // margin for the rounding of those positions), so nothing is missed and nothing is
 // invented. Every feature pair is tested once per query, whichever triangle pairs share it.
