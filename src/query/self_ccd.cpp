@@ -63,6 +63,17 @@ Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwis
 Aabb shifted(const Aabb& a, const Eigen::Vector3d& by) { return {a.lo - by, a.hi - by}; }
 Eigen::Vector3d centre(const Aabb& a) { return 0.5 * (a.lo + a.hi); }
 
+/// Boxes of an object (triangle or node) at t = 0 and at t = 1.
+using EndBoxes = std::array<Aabb, 2>;
+
+/// Contact is unchanged when one translation, linear in t, moves both objects: with their
+/// mean displacement taken out, neighbours that move alike sweep small boxes. Apart there
+/// means apart.
+bool apart_in_common_frame(const EndBoxes& a, const EndBoxes& b) {
+  const Eigen::Vector3d common = 0.5 * ((centre(a[1]) - centre(a[0])) + (centre(b[1]) - centre(b[0])));
+  return !hull(a[0], shifted(a[1], common)).overlaps(hull(b[0], shifted(b[1], common)));
+}
+
 /// What every query needs per call: the positions computed so far, the feature results,
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
@@ -91,12 +102,9 @@ class StepContext {
       const auto swept = [&](int n) { return bvh_.swept_box(n, q_hat0_, q_hat1_, s_); };
       return subspace_boxes_.get(a, swept).overlaps(subspace_boxes_.get(b, swept));
     }
-    const std::array<Aabb, 2>& ea = end_boxes_[a];
-    const std::array<Aabb, 2>& eb = end_boxes_[b];
-    if (!hull(ea[0], ea[1]).overlaps(hull(eb[0], eb[1]))) return false;
-    const Eigen::Vector3d common =
-        0.5 * ((centre(ea[1]) - centre(ea[0])) + (centre(eb[1]) - centre(eb[0])));
-    return hull(ea[0], shifted(ea[1], common)).overlaps(hull(eb[0], shifted(eb[1], common)));
+    const EndBoxes& ea = end_boxes_[a];
+    const EndBoxes& eb = end_boxes_[b];
+    return hull(ea[0], ea[1]).overlaps(hull(eb[0], eb[1])) && !apart_in_common_frame(ea, eb);
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
@@ -107,9 +115,11 @@ class StepContext {
   /// every triangle and node box containing them overlaps too, so the owner is visited.
   void test_triangle_pair(int a, int b) {
     if (stop_) return;
-    const Aabb box_a = triangle_box(a);
-    const Aabb box_b = triangle_box(b);
-    if (!box_a.overlaps(box_b) || mesh_.adjacent(a, b) || apart_in_common_frame(a, b)) return;
+    const EndBoxes ends_a = triangle_end_boxes(a);
+    const EndBoxes ends_b = triangle_end_boxes(b);
+    const Aabb box_a = hull(ends_a[0], ends_a[1]);
+    const Aabb box_b = hull(ends_b[0], ends_b[1]);
+    if (!box_a.overlaps(box_b) || mesh_.adjacent(a, b) || apart_in_common_frame(ends_a, ends_b)) return;
     ++stats_.triangle_pairs;
     const std::pair<int, int> pair{std::min(a, b), std::max(a, b)};
     const Triangle& ta = mesh_.triangles()[a];
@@ -146,8 +156,8 @@ class StepContext {
   /// ends, bottom-up (children come after their parent).
   void refit() {
     for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
-    triangle_boxes_.resize(mesh_.triangle_count());
-    for (int t = 0; t < mesh_.triangle_count(); ++t) triangle_boxes_[t] = box_of(x0_, x1_, mesh_.triangles()[t]);
+    triangle_end_boxes_.resize(mesh_.triangle_count());
+    for (int t = 0; t < mesh_.triangle_count(); ++t) triangle_end_boxes_[t] = ends_of(mesh_.triangles()[t]);
     edge_boxes_.resize(mesh_.edges().size());
     for (std::size_t e = 0; e < mesh_.edges().size(); ++e) edge_boxes_[e] = segment_box(mesh_.edges()[e]);
     const auto& nodes = bvh_.nodes();
@@ -155,14 +165,13 @@ class StepContext {
     const Aabb empty{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
     for (int n = static_cast<int>(nodes.size()) - 1; n >= 0; --n) {
       const SubspaceBvh::Node& node = nodes[n];
-      std::array<Aabb, 2>& box = end_boxes_[n];
+      EndBoxes& box = end_boxes_[n];
       box = {empty, empty};
       if (node.is_leaf()) {
         for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
-          for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) {
-            box[0] = hull(box[0], {x0_[v], x0_[v]});
-            box[1] = hull(box[1], {x1_[v], x1_[v]});
-          }
+          const EndBoxes& t = triangle_end_boxes_[bvh_.triangle_order()[i]];
+          box[0] = hull(box[0], t[0]);
+          box[1] = hull(box[1], t[1]);
         }
         continue;
       }
@@ -181,26 +190,6 @@ class StepContext {
     ++stats_.vertices_computed;
   }
 
-  /// Contact is unchanged when one translation, linear in t, moves both triangles: with the
-  /// pair's mean displacement taken out, neighbours that move alike sweep small boxes.
-  bool apart_in_common_frame(int a, int b) const {
-    const Triangle& ta = mesh_.triangles()[a];
-    const Triangle& tb = mesh_.triangles()[b];
-    Eigen::Vector3d common = Eigen::Vector3d::Zero();
-    for (int i = 0; i < 3; ++i) common += (x1_[ta[i]] - x0_[ta[i]]) + (x1_[tb[i]] - x0_[tb[i]]);
-    common /= 6.0;
-    const auto shifted_box = [&](const Triangle& t) {
-      Aabb box{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
-      for (int v : t) {
-        const Eigen::Vector3d end = x1_[v] - common;
-        box.lo = box.lo.cwiseMin(x0_[v]).cwiseMin(end);
-        box.hi = box.hi.cwiseMax(x0_[v]).cwiseMax(end);
-      }
-      return box;
-    };
-    return !shifted_box(ta).overlaps(shifted_box(tb));
-  }
-
   Aabb point_box(int v) const { return {x0_[v].cwiseMin(x1_[v]), x0_[v].cwiseMax(x1_[v])}; }
 
   Aabb segment_box(const Edge& ends) const {
@@ -209,15 +198,24 @@ class StepContext {
     return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
   }
 
-  // Refitting fills these arrays; the subspace bounds compute them as leaves need them.
   Aabb edge_box(int e) const {
     return edge_boxes_.empty() ? segment_box(mesh_.edges()[e]) : edge_boxes_[e];
   }
 
-  Aabb triangle_box(int t) {
-    if (!triangle_boxes_.empty()) return triangle_boxes_[t];
+  EndBoxes ends_of(const Triangle& t) const {
+    EndBoxes ends;
+    for (int end = 0; end < 2; ++end) {
+      const std::vector<Eigen::Vector3d>& x = end == 0 ? x0_ : x1_;
+      ends[end] = {x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]), x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]])};
+    }
+    return ends;
+  }
+
+  // Refitting fills the array; the subspace bounds compute them as leaves need them.
+  EndBoxes triangle_end_boxes(int t) {
+    if (!triangle_end_boxes_.empty()) return triangle_end_boxes_[t];
     for (int v : mesh_.triangles()[t]) ensure_vertex(v);
-    return box_of(x0_, x1_, mesh_.triangles()[t]);
+    return ends_of(mesh_.triangles()[t]);
   }
 
   /// Whether triangle t owns the vertex-face pair (v, f), v in t: the smallest non-adjacent
@@ -301,8 +299,9 @@ class StepContext {
   double s_;
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
-  std::vector<std::array<Aabb, 2>> end_boxes_;  // per node, at t = 0 and t = 1
-  std::vector<Aabb> triangle_boxes_, edge_boxes_;
+  std::vector<EndBoxes> end_boxes_;  // per node
+  std::vector<EndBoxes> triangle_end_boxes_;
+  std::vector<Aabb> edge_boxes_;
   LazyBoxes subspace_boxes_;
   std::vector<FeatureContact> feature_hits_;
   SelfCcdStats stats_;
