@@ -21,6 +21,16 @@ std::string scratch_file(const std::string& name, const std::string& content) {
   return path.string();
 }
 
+/// The reader's error message for a file with this name and content ("no error" if none).
+std::string error_of(const std::string& name, const std::string& content) {
+  try {
+    sscc::read_mesh(scratch_file(name, content));
+  } catch (const sscc::MeshFileError& e) {
+    return std::string(e.what());
+  }
+  return std::string("no error");
+}
+
 const char* kCubeOff =
     "OFF\n"
     "# a unit cube with quad faces\n"
@@ -137,14 +147,6 @@ TEST_CASE("zero-area triangles are reported", "[mesh]") {
 }
 
 TEST_CASE("bad files are refused with the file, the line and the problem", "[mesh]") {
-  const auto error_of = [](const std::string& name, const std::string& content) {
-    try {
-      sscc::read_mesh(scratch_file(name, content));
-    } catch (const sscc::MeshFileError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   CHECK_THAT(error_of("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"),
              Catch::Contains("nan.off:4") && Catch::Contains("not a finite double"));
   CHECK_THAT(error_of("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
@@ -168,14 +170,6 @@ TEST_CASE("bad files are refused with the file, the line and the problem", "[mes
 }
 
 TEST_CASE("hostile files end in an error, not a crash or a hang", "[mesh]") {
-  const auto error_of = [](const std::string& name, const std::string& content) {
-    try {
-      sscc::read_mesh(scratch_file(name, content));
-    } catch (const sscc::MeshFileError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   // Lines of form feeds or carriage returns only are blank lines.
   CHECK(sscc::read_mesh(scratch_file("ff.off", "OFF\n\f\n3 1 0\n0 0 0\n\r\r\n1 0 0\n0 1 0\n3 0 1 2\n"))
             .triangle_count() == 1);
