@@ -7,8 +7,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "brute_force.hpp"
 #include "fcl_self_ccd.hpp"
-#include "sscc/ccd/kernels.hpp"
 #include "sscc/mesh/mesh_io.hpp"
 #include "sscc/model/basis_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
@@ -48,33 +48,6 @@ PairList pair_list(const SelfCcdReport& report) {
   PairList pairs;
   for (const auto& p : report.pairs) pairs.emplace_back(p.first, p.second);
   return pairs;
-}
-
-/// Whether two triangles touch during the step, by the exact kernels on their 15 features.
-bool pair_touches(const SubspaceModel& model, const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
-                  int a, int b) {
-  const Eigen::VectorXd h0 = model.scaled_coordinates(q0);
-  const Eigen::VectorXd h1 = model.scaled_coordinates(q1);
-  const Triangle& ta = model.mesh().triangles()[a];
-  const Triangle& tb = model.mesh().triangles()[b];
-  const auto x0 = [&](int v) { return model.position(v, h0); };
-  const auto x1 = [&](int v) { return model.position(v, h1); };
-  for (int side = 0; side < 2; ++side) {
-    const Triangle& s = side == 0 ? ta : tb;
-    const Triangle& f = side == 0 ? tb : ta;
-    for (int v : s) {
-      if (ccd::vertex_face_ccd(x0(v), x0(f[0]), x0(f[1]), x0(f[2]), x1(v), x1(f[0]), x1(f[1]), x1(f[2])).hit) {
-        return true;
-      }
-    }
-  }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const int a0 = ta[i], a1 = ta[(i + 1) % 3], b0 = tb[j], b1 = tb[(j + 1) % 3];
-      if (ccd::edge_edge_ccd(x0(a0), x0(a1), x0(b0), x0(b1), x1(a0), x1(a1), x1(b0), x1(b1)).hit) return true;
-    }
-  }
-  return false;
 }
 
 double median(std::vector<double> v) {
@@ -142,11 +115,18 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
         const bool a_is_fcl = o.methods[i] == "fcl";
         const PairList& fcl_pairs = a_is_fcl ? a.pairs[k] : b.pairs[k];
         const PairList& ours = a_is_fcl ? b.pairs[k] : a.pairs[k];
+        // The exact kernels on all 15 features of each disputed pair.
+        const std::vector<Eigen::Vector3d> x0 = model.deformed_positions(q[k]);
+        const std::vector<Eigen::Vector3d> x1 = model.deformed_positions(q[k + 1]);
+        const auto touches = [&](const std::pair<int, int>& p) {
+          return triangle_pair_first_contact(x0, x1, model.mesh().triangles()[p.first],
+                                             model.mesh().triangles()[p.second]) <= 1.0;
+        };
         PairList only_fcl, only_ours;
         std::set_difference(fcl_pairs.begin(), fcl_pairs.end(), ours.begin(), ours.end(), std::back_inserter(only_fcl));
         std::set_difference(ours.begin(), ours.end(), fcl_pairs.begin(), fcl_pairs.end(), std::back_inserter(only_ours));
-        for (const auto& p : only_fcl) (pair_touches(model, q[k], q[k + 1], p.first, p.second) ? unexplained : false_positive)++;
-        for (const auto& p : only_ours) (pair_touches(model, q[k], q[k + 1], p.first, p.second) ? false_negative : unexplained)++;
+        for (const auto& p : only_fcl) (touches(p) ? unexplained : false_positive)++;
+        for (const auto& p : only_ours) (touches(p) ? false_negative : unexplained)++;
       }
       out << "agreement " << o.methods[i] << " vs " << o.methods[j] << ": identical_steps=" << identical << "/"
           << o.steps << '\n';

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cstdint>
-#include <tuple>
 #include <climits>
+#include <cstdint>
 #include <map>
+#include <tuple>
 
 #include "sscc/ccd/kernels.hpp"
 
@@ -31,14 +31,9 @@ SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<
   return report;
 }
 
-Aabb box_of(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
-            const Triangle& t) {
-  Aabb box{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
-  for (int v : t) {
-    box.lo = box.lo.cwiseMin(x0[v]).cwiseMin(x1[v]);
-    box.hi = box.hi.cwiseMax(x0[v]).cwiseMax(x1[v]);
-  }
-  return box;
+/// Box of triangle t at positions x.
+Aabb box_at(const std::vector<Eigen::Vector3d>& x, const Triangle& t) {
+  return {x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]), x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]])};
 }
 
 /// Node boxes computed on first use (each at most once per query).
@@ -202,14 +197,7 @@ class StepContext {
     return edge_boxes_.empty() ? segment_box(mesh_.edges()[e]) : edge_boxes_[e];
   }
 
-  EndBoxes ends_of(const Triangle& t) const {
-    EndBoxes ends;
-    for (int end = 0; end < 2; ++end) {
-      const std::vector<Eigen::Vector3d>& x = end == 0 ? x0_ : x1_;
-      ends[end] = {x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]), x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]])};
-    }
-    return ends;
-  }
+  EndBoxes ends_of(const Triangle& t) const { return {box_at(x0_, t), box_at(x1_, t)}; }
 
   // Refitting fills the array; the subspace bounds compute them as leaves need them.
   EndBoxes triangle_end_boxes(int t) {
@@ -383,7 +371,7 @@ class DiscreteContext {
     const Triangle& tb = mesh.triangles()[b];
     for (int v : ta) ensure(v);
     for (int v : tb) ensure(v);
-    if (!box_of(x_, x_, ta).overlaps(box_of(x_, x_, tb))) return;
+    if (!box_at(x_, ta).overlaps(box_at(x_, tb))) return;
     ++stats_.triangle_pairs;
     ++stats_.kernel_calls;
     if (ccd::triangles_intersect(x_[ta[0]], x_[ta[1]], x_[ta[2]], x_[tb[0]], x_[tb[1]], x_[tb[2]])) {

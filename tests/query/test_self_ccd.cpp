@@ -3,6 +3,7 @@
 #include <random>
 #include <thread>
 
+#include "brute_force.hpp"
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/query/self_ccd.hpp"
@@ -34,25 +35,8 @@ std::vector<sscc::TrianglePairContact> brute_force(const Fixture& f, const Eigen
   for (int a = 0; a < f.mesh.triangle_count(); ++a) {
     for (int b = a + 1; b < f.mesh.triangle_count(); ++b) {
       if (f.mesh.adjacent(a, b)) continue;
-      const auto& ta = f.mesh.triangles()[a];
-      const auto& tb = f.mesh.triangles()[b];
-      double earliest = 2.0;
-      const auto consider = [&](const sscc::ccd::CcdResult& r) {
-        if (r.hit) earliest = std::min(earliest, r.toi);
-      };
-      for (int side = 0; side < 2; ++side) {
-        const auto& s = side == 0 ? ta : tb;
-        const auto& t = side == 0 ? tb : ta;
-        for (int v : s) {
-          consider(sscc::ccd::vertex_face_ccd(x0[v], x0[t[0]], x0[t[1]], x0[t[2]], x1[v], x1[t[0]], x1[t[1]], x1[t[2]]));
-        }
-      }
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-          const int a0 = ta[i], a1 = ta[(i + 1) % 3], b0 = tb[j], b1 = tb[(j + 1) % 3];
-          consider(sscc::ccd::edge_edge_ccd(x0[a0], x0[a1], x0[b0], x0[b1], x1[a0], x1[a1], x1[b0], x1[b1]));
-        }
-      }
+      const double earliest =
+          sscc::validation::triangle_pair_first_contact(x0, x1, f.mesh.triangles()[a], f.mesh.triangles()[b]);
       if (earliest <= 1.0) pairs.push_back({a, b, earliest});
     }
   }
