@@ -9,9 +9,6 @@
 
 #include "brute_force.hpp"
 #include "fcl_self_ccd.hpp"
-#include "sscc/mesh/mesh_io.hpp"
-#include "sscc/model/basis_io.hpp"
-#include "sscc/model/polynomial_basis.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "trajectory.hpp"
 
@@ -27,23 +24,6 @@ struct MethodRun {
   std::vector<double> milliseconds;      // per step
 };
 
-SubspaceModel load_model(const SelfCcdValidationOptions& o, std::ostream& progress) {
-  MeshReadReport mesh_report;
-  TriangleMesh mesh = read_mesh(o.mesh, &mesh_report);
-  progress << "mesh " << o.mesh << ": " << mesh.vertex_count() << " vertices, "
-           << mesh.triangle_count() << " triangles (" << mesh_report.summary() << ")\n";
-  Eigen::MatrixXd basis;
-  const std::string prefix = "polynomial:";
-  if (o.basis.compare(0, prefix.size(), prefix) == 0) {
-    basis = polynomial_basis(mesh, std::stoi(o.basis.substr(prefix.size())));
-  } else {
-    basis = read_basis(o.basis);
-  }
-  const Eigen::VectorXd weights = o.weights.empty() ? Eigen::VectorXd::Ones(basis.cols())
-                                                    : read_weights(o.weights);
-  return SubspaceModel(std::move(mesh), basis, weights);
-}
-
 PairList pair_list(const SelfCcdReport& report) {
   PairList pairs;
   for (const auto& p : report.pairs) pairs.emplace_back(p.first, p.second);
@@ -58,13 +38,25 @@ double median(std::vector<double> v) {
 }  // namespace
 
 long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out, std::ostream& progress) {
-  const SubspaceModel model = load_model(o, progress);
+  const SubspaceModel model = load_model(o.model, progress);
   const SubspaceBvh bvh(model);
   const BvhBuildStats& build = bvh.build_stats();
   progress << "bvh: " << build.nodes << " nodes, " << build.leaves << " leaves, depth " << build.depth
            << ", built in " << build.seconds << " s\n";
-  const SelfCcd ccd(bvh);
-  const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed);
+  std::unique_ptr<Certificates> certificates;
+  if (!o.certificates.empty()) {
+    certificates = std::make_unique<Certificates>(Certificates::read(o.certificates, bvh));
+    progress << "certificates " << o.certificates << ": root radius " << certificates->node_radius(0)
+             << ", global radius " << certificates->global_radius() << '\n';
+  }
+  if (!certificates && std::find(o.methods.begin(), o.methods.end(), "sscc") != o.methods.end()) {
+    throw std::invalid_argument("method sscc needs --certificates FILE.sscc (from sscc precompute)");
+  }
+  // One detector: "traditional" is the same query with the certificates switched off.
+  const SelfCcd ccd = certificates ? SelfCcd(bvh, *certificates) : SelfCcd(bvh);
+  SelfCcdOptions traditional;
+  traditional.use_certificates = false;
+  const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed, o.burst);
   std::map<std::string, MethodRun> runs;
   for (const std::string& method : o.methods) {
     progress << "method " << method << ": " << o.steps << " steps\n";
@@ -73,14 +65,15 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
     if (method == "fcl") fcl = std::make_unique<FclSelfCcd>(model.mesh());
     for (int k = 0; k < o.steps; ++k) {
       const auto start = std::chrono::steady_clock::now();
-      if (method == "traditional" || method == "exhaustive") {
-        run.reports.push_back(method == "traditional" ? ccd.query(q[k], q[k + 1])
-                                                      : ccd.query_exhaustive(q[k], q[k + 1]));
+      if (method == "sscc" || method == "traditional" || method == "exhaustive") {
+        run.reports.push_back(method == "sscc"          ? ccd.query(q[k], q[k + 1])
+                              : method == "traditional" ? ccd.query(q[k], q[k + 1], traditional)
+                                                        : ccd.query_exhaustive(q[k], q[k + 1]));
         run.pairs.push_back(pair_list(run.reports.back()));
       } else if (method == "fcl") {
         run.pairs.push_back(fcl->step(model.deformed_positions(q[k]), model.deformed_positions(q[k + 1])));
       } else {
-        throw std::invalid_argument("unknown method '" + method + "' (traditional, exhaustive, fcl)");
+        throw std::invalid_argument("unknown method '" + method + "' (sscc, traditional, exhaustive, fcl)");
       }
       run.milliseconds.push_back(
           1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -92,6 +85,27 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
     char line[256];
     std::snprintf(line, sizeof line, "%s selfccd: steps=%d colliding_steps=%ld pairs=%ld mean_ms=%.3f median_ms=%.3f",
                   method.c_str(), o.steps, colliding, pairs, mean, median(run.milliseconds));
+    out << line;
+    if (method == "sscc") {
+      long certified = 0;
+      for (const SelfCcdReport& report : run.reports) certified += report.stats.root_certified;
+      out << " certified_steps=" << certified;
+    }
+    out << '\n';
+  }
+  if (runs.count("sscc") && runs.count("traditional")) {
+    const MethodRun& fast = runs["sscc"];
+    const MethodRun& slow = runs["traditional"];
+    std::vector<double> ratios;
+    double fast_total = 0.0, slow_total = 0.0;
+    for (int k = 0; k < o.steps; ++k) {
+      ratios.push_back(slow.milliseconds[k] / std::max(fast.milliseconds[k], 1e-6));
+      fast_total += fast.milliseconds[k];
+      slow_total += slow.milliseconds[k];
+    }
+    char line[256];
+    std::snprintf(line, sizeof line, "speedup sscc vs traditional: mean_time_ratio=%.2f median_step_ratio=%.2f",
+                  slow_total / fast_total, median(ratios));
     out << line << '\n';
   }
   long problems = 0;

@@ -1,27 +1,32 @@
 #include "trajectory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 namespace sscc::validation {
 
 std::vector<Eigen::VectorXd> random_trajectory(const SubspaceModel& model, int steps, double amplitude,
-                                               std::uint64_t seed) {
+                                               std::uint64_t seed, double burst) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
   const int r = model.mode_count();
   const double scale = amplitude / std::sqrt(static_cast<double>(r));
   const double innovation = std::sqrt(1.0 - kTrajectoryCorrelation * kTrajectoryCorrelation);
   const Eigen::VectorXd unscale = model.weights().cwiseSqrt().cwiseInverse();
+  const auto envelope = [&](int k) {
+    const double pulse = std::max(0.0, std::sin(2.0 * M_PI * k / kBurstPeriod));
+    return 1.0 + (burst - 1.0) * pulse * pulse * pulse * pulse;
+  };
   std::vector<Eigen::VectorXd> q;
   Eigen::VectorXd q_hat(r);
   for (int j = 0; j < r; ++j) q_hat[j] = scale * normal(rng);
-  q.push_back(q_hat.cwiseProduct(unscale));
+  q.push_back(envelope(0) * q_hat.cwiseProduct(unscale));
   for (int k = 0; k < steps; ++k) {
     for (int j = 0; j < r; ++j) {
       q_hat[j] = kTrajectoryCorrelation * q_hat[j] + innovation * scale * normal(rng);
     }
-    q.push_back(q_hat.cwiseProduct(unscale));
+    q.push_back(envelope(k + 1) * q_hat.cwiseProduct(unscale));
   }
   return q;
 }

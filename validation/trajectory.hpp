@@ -5,6 +5,10 @@
 //   q_hat_{k+1} = rho q_hat_k + sqrt(1 - rho^2) amplitude * xi_{k+1} / sqrt(r),
 // with xi_k independent standard normal vectors and rho = 0.9, so ||q||_M stays near
 // `amplitude` and each step moves by about 0.44 amplitude. Step k goes from q_k to q_{k+1}.
+//
+// With burst > 1 the walk is scaled by an envelope that rises smoothly from 1 to `burst`
+// once every kBurstPeriod steps, 1 + (burst - 1) max(0, sin(2 pi k / period))^4: most
+// steps are modest, and about a fifth are large excursions (where contacts happen).
 #pragma once
 
 #include <Eigen/Core>
@@ -17,9 +21,10 @@
 namespace sscc::validation {
 
 inline constexpr double kTrajectoryCorrelation = 0.9;
+inline constexpr int kBurstPeriod = 50;
 
 /// steps + 1 configurations (reduced coordinates q, not scaled).
 std::vector<Eigen::VectorXd> random_trajectory(const SubspaceModel& model, int steps, double amplitude,
-                                               std::uint64_t seed);
+                                               std::uint64_t seed, double burst = 1.0);
 
 }  // namespace sscc::validation

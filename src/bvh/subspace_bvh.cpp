@@ -169,23 +169,24 @@ void SubspaceBvh::compute_bounds(int n) {
   }
 }
 
-Aabb SubspaceBvh::box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) const {
+SubspaceBvh::SubspaceBound SubspaceBvh::subspace_bound(int n) const {
   const int r = model_.mode_count();
-  const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> mean(
-      &mean_modes_[static_cast<std::size_t>(n) * 3 * r], 3, r);
-  const Eigen::Vector3d centre = centre_[n] + mean * q_hat;
-  const Eigen::Vector3d half = half_[n] + rate_[n] * q_hat_norm;
+  return {centre_[n], half_[n], rate_[n], {&mean_modes_[static_cast<std::size_t>(n) * 3 * r], 3, r}};
+}
+
+Aabb SubspaceBvh::box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) const {
+  const SubspaceBound b = subspace_bound(n);
+  const Eigen::Vector3d centre = b.centre + b.mean_modes * q_hat;
+  const Eigen::Vector3d half = b.half + b.rate * q_hat_norm;
   return {centre - half, centre + half};
 }
 
 Aabb SubspaceBvh::swept_box(int n, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1,
                             double s) const {
-  const int r = model_.mode_count();
-  const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> mean(
-      &mean_modes_[static_cast<std::size_t>(n) * 3 * r], 3, r);
-  const Eigen::Vector3d c0 = centre_[n] + mean * q_hat0;
-  const Eigen::Vector3d c1 = centre_[n] + mean * q_hat1;
-  const Eigen::Vector3d half = half_[n] + rate_[n] * s;
+  const SubspaceBound b = subspace_bound(n);
+  const Eigen::Vector3d c0 = b.centre + b.mean_modes * q_hat0;
+  const Eigen::Vector3d c1 = b.centre + b.mean_modes * q_hat1;
+  const Eigen::Vector3d half = b.half + b.rate * s;
   return {c0.cwiseMin(c1) - half, c0.cwiseMax(c1) + half};
 }
 

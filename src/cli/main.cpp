@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "kernel_validation.hpp"
+#include "precompute_command.hpp"
 #include "selfccd_validation.hpp"
 
 namespace {
@@ -26,12 +27,19 @@ const char* kUsage =
     "            --output DIR    CSV files and plots of the sweeps (default validation-output)\n"
     "            --repeats R     timing repeats, the median is reported (default 5)\n"
     "            --quiet         no progress output\n"
+    "  precompute  the certificates of a model, written to a certificate file\n"
+    "            --mesh FILE --basis B --weights FILE   the model, as for selfccd\n"
+    "            --epsilon E            relative accuracy of the radii (default 0.1)\n"
+    "            --global-scale G       radii resolved up to G times the global radius (default 1)\n"
+    "            --output FILE.sscc     the certificate file\n"
     "  selfccd   continuous self-collision over a seeded random trajectory\n"
     "            --mesh FILE            OFF, OBJ or PLY\n"
     "            --basis polynomial:R | FILE.U | FILE   (default polynomial:27)\n"
     "            --weights FILE         weights of the modes (default all 1)\n"
     "            --steps N --amplitude A --seed S   trajectory: ||q||_M stays near A\n"
-    "            --methods LIST         comma-separated: traditional, exhaustive, fcl\n"
+    "            --burst B              every 50 steps the amplitude swells to B times A\n"
+    "            --certificates FILE    certificate file from precompute (method sscc)\n"
+    "            --methods LIST         comma-separated: sscc, traditional, exhaustive, fcl\n"
     "  help      this text\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -116,16 +124,39 @@ std::vector<std::string> split_list(const std::string& list) {
   return items;
 }
 
+sscc::validation::ModelSource model_source(const Flags& flags) {
+  sscc::validation::ModelSource source;
+  source.mesh = flags.text("--mesh");
+  if (flags.has("--basis")) source.basis = flags.text("--basis");
+  if (flags.has("--weights")) source.weights = flags.text("--weights");
+  return source;
+}
+
+int run_precompute(const std::vector<std::string>& args) {
+  const Flags flags =
+      parse_flags(args, {"--mesh", "--basis", "--weights", "--epsilon", "--global-scale", "--output"}, "precompute");
+  if (!flags.has("--mesh")) usage_error("precompute needs --mesh FILE");
+  if (!flags.has("--output")) usage_error("precompute needs --output FILE.sscc");
+  sscc::validation::PrecomputeCommandOptions options;
+  options.model = model_source(flags);
+  options.output = flags.text("--output");
+  if (flags.has("--epsilon")) options.parameters.epsilon = flags.number<double>("--epsilon");
+  if (flags.has("--global-scale")) options.parameters.global_radius_scale = flags.number<double>("--global-scale");
+  return run_report(options, flags.quiet, sscc::validation::run_precompute, "precompute");
+}
+
 int run_selfccd(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(
-      args, {"--mesh", "--basis", "--weights", "--steps", "--amplitude", "--seed", "--methods"}, "selfccd");
+      args,
+      {"--mesh", "--basis", "--weights", "--steps", "--amplitude", "--burst", "--seed", "--methods", "--certificates"},
+      "selfccd");
   sscc::validation::SelfCcdValidationOptions options;
   if (!flags.has("--mesh")) usage_error("selfccd needs --mesh FILE");
-  options.mesh = flags.text("--mesh");
-  if (flags.has("--basis")) options.basis = flags.text("--basis");
-  if (flags.has("--weights")) options.weights = flags.text("--weights");
+  options.model = model_source(flags);
   if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
   if (flags.has("--amplitude")) options.amplitude = flags.number<double>("--amplitude");
+  if (flags.has("--burst")) options.burst = flags.number<double>("--burst");
+  if (flags.has("--certificates")) options.certificates = flags.text("--certificates");
   if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
   if (flags.has("--methods")) options.methods = split_list(flags.text("--methods"));
   if (options.steps <= 0) usage_error("--steps must be positive");
@@ -142,6 +173,7 @@ int main(int argc, char** argv) {
   try {
     if (command == "kernels") return run_kernels(args);
     if (command == "selfccd") return run_selfccd(args);
+    if (command == "precompute") return run_precompute(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;

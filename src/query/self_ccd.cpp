@@ -6,6 +6,7 @@
 #include <climits>
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <tuple>
 
 #include "sscc/ccd/kernels.hpp"
@@ -73,20 +74,21 @@ bool apart_in_common_frame(const EndBoxes& a, const EndBoxes& b) {
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
  public:
-  StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
+  /// s = max(||q_hat0||, ||q_hat1||).
+  StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
               const SelfCcdOptions& options)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
-        q_hat0_(bvh.model().scaled_coordinates(q0)),
-        q_hat1_(bvh.model().scaled_coordinates(q1)),
-        s_(std::max(q_hat0_.stableNorm(), q_hat1_.stableNorm())),
+        q_hat0_(q_hat0),
+        q_hat1_(q_hat1),
+        s_(s),
         x0_(mesh_.vertex_count()),
         x1_(mesh_.vertex_count()),
         computed_(mesh_.vertex_count(), 0),
-        subspace_boxes_(bvh.nodes().size()) {
-    if (options.bounds == NodeBounds::kRefit) refit();
-  }
+        subspace_boxes_(bvh.nodes().size()),
+        end_boxes_(bvh.nodes().size()),
+        end_boxes_known_(bvh.nodes().size(), 0) {}
 
   /// Whether two nodes may hold touching triangles. With refitted boxes the test is also
   /// made in the nodes' common moving frame: their mean displacement taken out of both
@@ -97,8 +99,8 @@ class StepContext {
       const auto swept = [&](int n) { return bvh_.swept_box(n, q_hat0_, q_hat1_, s_); };
       return subspace_boxes_.get(a, swept).overlaps(subspace_boxes_.get(b, swept));
     }
-    const EndBoxes& ea = end_boxes_[a];
-    const EndBoxes& eb = end_boxes_[b];
+    const EndBoxes& ea = node_end_boxes(a);
+    const EndBoxes& eb = node_end_boxes(b);
     return hull(ea[0], ea[1]).overlaps(hull(eb[0], eb[1])) && !apart_in_common_frame(ea, eb);
   }
   bool stopped() const { return stop_; }
@@ -147,34 +149,24 @@ class StepContext {
   }
 
  private:
-  /// All positions, the triangles' and edges' swept boxes, then the nodes' boxes at both
-  /// ends, bottom-up (children come after their parent).
-  void refit() {
-    for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
-    triangle_end_boxes_.resize(mesh_.triangle_count());
-    for (int t = 0; t < mesh_.triangle_count(); ++t) triangle_end_boxes_[t] = ends_of(mesh_.triangles()[t]);
-    edge_boxes_.resize(mesh_.edges().size());
-    for (std::size_t e = 0; e < mesh_.edges().size(); ++e) edge_boxes_[e] = segment_box(mesh_.edges()[e]);
-    const auto& nodes = bvh_.nodes();
-    end_boxes_.resize(nodes.size());
+  /// A node's boxes at both ends, refitted from its children's (or its triangles') on
+  /// first use: only the nodes the traversal reaches, and the vertices under them.
+  const EndBoxes& node_end_boxes(int n) {
+    if (end_boxes_known_[n]) return end_boxes_[n];
+    const SubspaceBvh::Node& node = bvh_.nodes()[n];
     const Aabb empty{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
-    for (int n = static_cast<int>(nodes.size()) - 1; n >= 0; --n) {
-      const SubspaceBvh::Node& node = nodes[n];
-      EndBoxes& box = end_boxes_[n];
-      box = {empty, empty};
-      if (node.is_leaf()) {
-        for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
-          const EndBoxes& t = triangle_end_boxes_[bvh_.triangle_order()[i]];
-          box[0] = hull(box[0], t[0]);
-          box[1] = hull(box[1], t[1]);
-        }
-        continue;
-      }
-      for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
-        box[0] = hull(box[0], end_boxes_[c][0]);
-        box[1] = hull(box[1], end_boxes_[c][1]);
-      }
+    EndBoxes box{empty, empty};
+    const auto add = [&](const EndBoxes& part) {
+      box[0] = hull(box[0], part[0]);
+      box[1] = hull(box[1], part[1]);
+    };
+    if (node.is_leaf()) {
+      for (int i = node.triangle_begin; i < node.triangle_end; ++i) add(triangle_end_boxes(bvh_.triangle_order()[i]));
+    } else {
+      for (int c = node.first_child; c < node.first_child + node.child_count; ++c) add(node_end_boxes(c));
     }
+    end_boxes_known_[n] = 1;
+    return end_boxes_[n] = box;
   }
 
   void ensure_vertex(int v) {
@@ -193,17 +185,12 @@ class StepContext {
     return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
   }
 
-  Aabb edge_box(int e) const {
-    return edge_boxes_.empty() ? segment_box(mesh_.edges()[e]) : edge_boxes_[e];
-  }
+  Aabb edge_box(int e) const { return segment_box(mesh_.edges()[e]); }
 
-  EndBoxes ends_of(const Triangle& t) const { return {box_at(x0_, t), box_at(x1_, t)}; }
-
-  // Refitting fills the array; the subspace bounds compute them as leaves need them.
   EndBoxes triangle_end_boxes(int t) {
-    if (!triangle_end_boxes_.empty()) return triangle_end_boxes_[t];
-    for (int v : mesh_.triangles()[t]) ensure_vertex(v);
-    return ends_of(mesh_.triangles()[t]);
+    const Triangle& triangle = mesh_.triangles()[t];
+    for (int v : triangle) ensure_vertex(v);
+    return {box_at(x0_, triangle), box_at(x1_, triangle)};
   }
 
   /// Whether triangle t owns the vertex-face pair (v, f), v in t: the smallest non-adjacent
@@ -287,24 +274,30 @@ class StepContext {
   double s_;
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
-  std::vector<EndBoxes> end_boxes_;  // per node
-  std::vector<EndBoxes> triangle_end_boxes_;
-  std::vector<Aabb> edge_boxes_;
   LazyBoxes subspace_boxes_;
+  std::vector<EndBoxes> end_boxes_;  // per node, valid where known
+  std::vector<char> end_boxes_known_;
   std::vector<FeatureContact> feature_hits_;
   SelfCcdStats stats_;
   bool stop_ = false;
 };
 
-/// Self-traversal (SSCC paper, Algorithm 1 without the certificates): intra(n) tests the
-/// node against itself, inter(a, b) two disjoint nodes whose boxes overlap.
+/// Self-traversal (SSCC paper, Algorithm 1): intra(n) tests the node against itself,
+/// inter(a, b) two disjoint nodes whose boxes overlap; with certificates, a node or sibling
+/// pair whose radius exceeds s is skipped.
 template <typename Context>
 class Traversal {
  public:
-  Traversal(const SubspaceBvh& bvh, Context& context) : bvh_(bvh), context_(context) {}
+  /// certificates may be null (the traditional traversal).
+  Traversal(const SubspaceBvh& bvh, Context& context, const Certificates* certificates, double s)
+      : bvh_(bvh), context_(context), certificates_(certificates), s_(s) {}
 
   void intra(int n) {
     if (context_.stopped()) return;
+    if (certificates_ && s_ < certificates_->node_radius(n)) {
+      ++context_.stats().certified;
+      return;
+    }
     ++context_.stats().nodes_visited;
     const SubspaceBvh::Node& node = bvh_.nodes()[n];
     if (node.is_leaf()) {
@@ -320,7 +313,12 @@ class Traversal {
   }
 
   void inter(int a, int b) {
-    if (context_.stopped() || !context_.nodes_overlap(a, b)) return;
+    if (context_.stopped()) return;
+    if (certificates_ && s_ < certificates_->sibling_radius(a, b)) {
+      ++context_.stats().certified;
+      return;
+    }
+    if (!context_.nodes_overlap(a, b)) return;
     ++context_.stats().nodes_visited;
     const SubspaceBvh::Node& na = bvh_.nodes()[a];
     const SubspaceBvh::Node& nb = bvh_.nodes()[b];
@@ -347,13 +345,15 @@ class Traversal {
 
   const SubspaceBvh& bvh_;
   Context& context_;
+  const Certificates* certificates_;
+  double s_;
 };
 
 /// Discrete variant: boxes at one configuration, exact triangle-triangle tests.
 class DiscreteContext {
  public:
-  DiscreteContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q, const SelfCcdOptions& options)
-      : bvh_(bvh), options_(options), q_hat_(bvh.model().scaled_coordinates(q)), norm_(q_hat_.stableNorm()),
+  DiscreteContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat, double norm, const SelfCcdOptions& options)
+      : bvh_(bvh), options_(options), q_hat_(q_hat), norm_(norm),
         x_(bvh.model().mesh().vertex_count()), computed_(x_.size(), 0), boxes_(bvh.nodes().size()) {}
 
   bool nodes_overlap(int a, int b) {
@@ -406,25 +406,64 @@ class DiscreteContext {
 
 }  // namespace
 
+SelfCcd::SelfCcd(const SubspaceBvh& bvh, const Certificates& certificates)
+    : bvh_(bvh), certificates_(&certificates) {
+  certificates.check_belongs_to(bvh);
+}
+
+namespace {
+
+/// The certificates a query may use (null for none); refuses a minimum separation, which
+/// certificates of contact do not cover.
+const Certificates* usable(const Certificates* certificates, const SelfCcdOptions& options) {
+  if (!certificates || !options.use_certificates) return nullptr;
+  if (options.kernel.minimum_separation > 0.0) {
+    throw std::invalid_argument(
+        "SelfCcd: certificates bound contact, not a minimum separation; set use_certificates = false");
+  }
+  return certificates;
+}
+
+/// The report of a step the root's certificate decides: nothing touches.
+SelfCcdReport root_certified_report(std::chrono::steady_clock::time_point start) {
+  SelfCcdStats stats;
+  stats.certified = 1;
+  stats.root_certified = true;
+  return sorted_report({}, {}, stats, start);
+}
+
+}  // namespace
+
 SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                              const SelfCcdOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  StepContext context(bvh_, q0, q1, options);
-  Traversal<StepContext>(bvh_, context).intra(0);
+  const Certificates* certificates = usable(certificates_, options);
+  const Eigen::VectorXd q_hat0 = bvh_.model().scaled_coordinates(q0);
+  const Eigen::VectorXd q_hat1 = bvh_.model().scaled_coordinates(q1);
+  const double s = std::max(q_hat0.stableNorm(), q_hat1.stableNorm());
+  if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
+  StepContext context(bvh_, q_hat0, q_hat1, s, options);
+  Traversal<StepContext>(bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
 
 SelfCcdReport SelfCcd::query_discrete(const Eigen::VectorXd& q, const SelfCcdOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  DiscreteContext context(bvh_, q, options);
-  Traversal<DiscreteContext>(bvh_, context).intra(0);
+  const Certificates* certificates = usable(certificates_, options);
+  const Eigen::VectorXd q_hat = bvh_.model().scaled_coordinates(q);
+  const double s = q_hat.stableNorm();
+  if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
+  DiscreteContext context(bvh_, q_hat, s, options);
+  Traversal<DiscreteContext>(bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
 
 SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                                         const SelfCcdOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  StepContext context(bvh_, q0, q1, options);
+  const Eigen::VectorXd q_hat0 = bvh_.model().scaled_coordinates(q0);
+  const Eigen::VectorXd q_hat1 = bvh_.model().scaled_coordinates(q1);
+  StepContext context(bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options);
   const int n = bvh_.model().mesh().triangle_count();
   for (int a = 0; a < n && !context.stopped(); ++a) {
     for (int b = a + 1; b < n && !context.stopped(); ++b) context.test_triangle_pair(a, b);

@@ -67,6 +67,14 @@ class SubspaceBvh {
   const std::vector<int>& triangle_order() const { return order_; }
   const BvhBuildStats& build_stats() const { return stats_; }
 
+  /// Node n's bound: in every configuration q_hat its vertices lie in the box
+  /// centre + mean_modes q_hat +- (half + rate ||q_hat||).
+  struct SubspaceBound {
+    Eigen::Vector3d centre, half, rate;
+    Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> mean_modes;
+  };
+  SubspaceBound subspace_bound(int n) const;
+
   /// Box of node n for scaled coordinates q_hat, whose norm is given (O(r)).
   Aabb box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) const;
   /// Box of node n over the straight-line step q_hat0 -> q_hat1; s = max of their norms.

@@ -11,6 +11,13 @@
 // margin for the rounding of those positions), so nothing is missed and nothing is
 // invented. Every feature pair is tested once per query, whichever triangle pairs share it.
 //
+// With certificates (SSCC paper, Algorithm 1 made continuous): s = max(||q0||_M, ||q1||_M)
+// is computed once per step; intra(n) returns when s < R_n and inter(a, b) of siblings when
+// s < R_ab (the ellipsoid is convex, so the whole step lies inside it). A step with s below
+// the root's radius costs O(r). Certificates switched off (or absent) give the traditional
+// query: the same code, so the reports are identical and speedups compare like with like.
+// The certificates' guarantee is for the exact positions; see certificates.hpp.
+//
 // A built detector is immutable; query() keeps its scratch per call and is thread-safe.
 #pragma once
 
@@ -20,6 +27,7 @@
 
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/ccd/ccd_types.hpp"
+#include "sscc/certificates/certificates.hpp"
 
 namespace sscc {
 
@@ -53,8 +61,9 @@ enum class SelfCcdMode : std::uint8_t {
 
 /// How node boxes are bounded over the step.
 enum class NodeBounds : std::uint8_t {
-  /// Every vertex position at both ends (3Vr flops), then boxes refitted bottom-up: tight
-  /// whatever the deformation. The traditional query's default.
+  /// Boxes refitted bottom-up from the vertex positions at both ends, computed for the
+  /// nodes the traversal reaches (every node without certificates, 3Vr flops): tight
+  /// whatever the deformation. The default.
   kRefit,
   /// The O(r) subspace bounds of SubspaceBvh, vertex positions only where a leaf needs
   /// them: cheap for small deformations, loose for large ones.
@@ -64,6 +73,10 @@ enum class NodeBounds : std::uint8_t {
 struct SelfCcdOptions {
   SelfCcdMode mode = SelfCcdMode::kAllContacts;
   NodeBounds bounds = NodeBounds::kRefit;
+  /// Cull by the certificates when the detector has them; false gives the traditional query.
+  bool use_certificates = true;
+  /// The kernels' options. A minimum separation (kernel.minimum_separation > 0) cannot be
+  /// combined with certificates, which bound contact, not proximity: such queries throw.
   ccd::CcdOptions kernel;
 };
 
@@ -73,6 +86,8 @@ struct SelfCcdStats {
   long triangle_pairs = 0;   ///< non-adjacent pairs whose swept boxes overlapped
   long kernel_calls = 0;
   long vertices_computed = 0;
+  long certified = 0;          ///< nodes and sibling pairs culled by a certificate
+  bool root_certified = false;  ///< the whole step decided by the root's certificate
   double seconds = 0.0;
 };
 
@@ -87,8 +102,13 @@ struct SelfCcdReport {
 class SelfCcd {
  public:
   explicit SelfCcd(const SubspaceBvh& bvh) : bvh_(bvh) {}
+  /// With certificates; throws std::invalid_argument when they were computed for another
+  /// model or hierarchy.
+  SelfCcd(const SubspaceBvh& bvh, const Certificates& certificates);
 
-  /// The traditional query: swept-box traversal of the hierarchy, then the leaf kernels.
+  const Certificates* certificates() const { return certificates_; }
+
+  /// Swept-box traversal of the hierarchy (culled by the certificates), then the kernels.
   /// q0 and q1 are reduced coordinates (not scaled); wrong sizes or NaN/infinity throw
   /// std::invalid_argument.
   SelfCcdReport query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
@@ -98,12 +118,14 @@ class SelfCcd {
   /// intersect (exact), as pairs with toi 0; no features.
   SelfCcdReport query_discrete(const Eigen::VectorXd& q, const SelfCcdOptions& options = {}) const;
 
-  /// Reference: every non-adjacent triangle pair, with the same leaf code (O(N^2)).
+  /// Reference: every non-adjacent triangle pair, with the same leaf code (O(N^2)); no
+  /// certificates.
   SelfCcdReport query_exhaustive(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                                  const SelfCcdOptions& options = {}) const;
 
  private:
   const SubspaceBvh& bvh_;
+  const Certificates* certificates_ = nullptr;
 };
 
 }  // namespace sscc

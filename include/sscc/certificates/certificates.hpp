@@ -1,0 +1,107 @@
+// Subspace self-collision certificates (SSCC paper, sections 4 and 5).
+//
+// For every node n of a SubspaceBvh, the intra-node radius R_n: no two non-adjacent
+// triangles under n touch in any configuration with ||q||_M < R_n. For every pair of
+// sibling nodes (a, b), the inter-node radius R_ab: no triangle under a touches a
+// non-adjacent triangle under b while ||q||_M < R_ab. The set ||q||_M < R is an ellipsoid,
+// convex, so a straight-line step whose two ends lie inside it is certified whole.
+//
+// Guarantee: every stored radius is a lower bound of the true one (for the exact positions
+// p + U q): built from the conservative triangle-pair bounds of triangle_pair_bound.hpp, the
+// box-box and 1D bounds in Cauchy-Schwarz form, and clamps that only lower values (the
+// global radius R_global, and a computation stopped early keeps the minimum it was handed).
+// Radii are not tight: a pair's radius is resolved to within the relative accuracy epsilon
+// where it matters, and every radius is capped at R_global.
+//
+// Units: radii are norms of the scaled coordinates, ||q_hat||_2 = ||q||_M.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sscc/bvh/subspace_bvh.hpp"
+
+namespace sscc {
+
+struct CertificateParameters {
+  /// Relative accuracy of the triangle-pair radii (norms): refined until the lower bound
+  /// is at least (1 - epsilon) times a contact configuration found. Smaller: tighter
+  /// certificates, longer precomputation.
+  double epsilon = 0.1;
+  /// R_global = scale * (the norm at which the floppiest mode direction moves some vertex
+  /// by half the mesh's bounding-box diagonal). Radii are resolved up to R_global only.
+  double global_radius_scale = 1.0;
+  /// Limits of the refinement of one triangle pair (past them the bound reached is kept).
+  int max_subdivision_depth = 16;
+  int max_evaluations_per_pair = 2048;
+};
+
+struct PrecomputeStats {
+  long node_pairs_visited = 0;
+  long node_pairs_culled = 0;       ///< by the box-box bound
+  long triangle_pairs_culled = 0;   ///< by the 1D bound
+  long triangle_pairs_bounded = 0;  ///< triangle_pair_radius calls
+  long constant_mode_evaluations = 0;
+  int threads = 1;
+  double seconds = 0.0;
+};
+
+/// Called after each tree level is done (deepest first): levels done, levels in all.
+using PrecomputeProgress = std::function<void(int, int)>;
+
+class Certificates {
+ public:
+  /// Computes the certificates of every node and sibling pair, in parallel (OpenMP).
+  /// Throws std::invalid_argument for parameters out of range.
+  static Certificates precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters = {},
+                                 const PrecomputeProgress& progress = {});
+
+  /// For a model and hierarchy, the identity the certificates are tied to: a hash of the
+  /// rest positions, triangles, scaled basis, the tree and the parameters.
+  static std::uint64_t key_of(const SubspaceBvh& bvh, const CertificateParameters& parameters);
+
+  /// Writes the versioned, checksummed binary file; throws std::runtime_error on I/O failure.
+  void write(const std::string& path) const;
+  /// Reads a file written by write() for this hierarchy. Throws CertificateFileError when
+  /// the file is missing, truncated, corrupt, of another version, or computed for another
+  /// mesh, basis, weights or tree.
+  static Certificates read(const std::string& path, const SubspaceBvh& bvh);
+
+  double global_radius() const { return global_radius_; }
+  /// R_n.
+  double node_radius(int n) const { return node_radius_[n]; }
+  /// R_ab for two children of one node; 0 (no certificate) for any other pair.
+  double sibling_radius(int a, int b) const {
+    return first_sibling_[a] == first_sibling_[b] && a != b
+               ? sibling_radius_[a][b - first_sibling_[b]]
+               : 0.0;
+  }
+  int node_count() const { return static_cast<int>(node_radius_.size()); }
+  const CertificateParameters& parameters() const { return parameters_; }
+  std::uint64_t key() const { return key_; }
+  /// Statistics of the precomputation (zero for certificates read from a file).
+  const PrecomputeStats& stats() const { return stats_; }
+  /// Throws std::invalid_argument when the certificates were not computed for bvh.
+  void check_belongs_to(const SubspaceBvh& bvh) const;
+
+ private:
+  Certificates(const SubspaceBvh& bvh, const CertificateParameters& parameters);
+
+  CertificateParameters parameters_;
+  std::uint64_t key_ = 0;
+  double global_radius_ = 0.0;
+  std::vector<double> node_radius_;
+  std::vector<int> first_sibling_;                   // the first child of the node's parent
+  std::vector<std::array<double, kBranchingFactor>> sibling_radius_;  // by the sibling's position
+  PrecomputeStats stats_;
+};
+
+struct CertificateFileError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace sscc

@@ -1,0 +1,68 @@
+// Lower bounds on the subspace distance to contact of two triangles (SSCC paper, section 5.1).
+//
+// Two triangles deform with their vertices, x = p + U_hat q_hat, the modes interpolated
+// barycentrically across each triangle. Their collision radius is the smallest ||q_hat||_2
+// at which some point of one touches some point of the other.
+//
+// Guarantees (exact-arithmetic statements; every floating-point step is padded so that the
+// computed value stays on the conservative side, see the constants in the source):
+//  - triangle_pair_radius().lower never exceeds the collision radius. Per pair of pieces it
+//    is a dual bound: for any v, v^T (Xa - Xb) <= ||(U(Xb) - U(Xa))^T v|| ||q_hat|| at a
+//    contact, extremes taken at the pieces' vertex pairs. v is the multiplier of the
+//    constant-mode problem (each piece moved by the mean of its modes; the paper's section
+//    5.1: a triangle distance after the map (A A^T)^(-1/2)), which makes the bound at least
+//    the paper's perturbation bound (eq. 10 with eq. 11) and usually far tighter, or the
+//    multiplier at the upper bound's points, whichever is larger. Where the bounds are
+//    loose the larger piece is split at its edge midpoints into 4, best first.
+//  - .upper is a configuration that does bring the triangles into contact (the paper's
+//    R_hi, up to rounding): it only steers the refinement and is never used as a bound.
+//  - one_dimensional_radius() is the 1D projection bound in Cauchy-Schwarz form, also a
+//    lower bound.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+
+namespace sscc {
+
+/// A triangle with its rest vertices and the 3 x r scaled mode block of each vertex.
+struct ModalTriangle {
+  std::array<Eigen::Vector3d, 3> rest;
+  std::array<Eigen::Matrix<double, 3, Eigen::Dynamic>, 3> modes;
+};
+
+struct TrianglePairRadiusOptions {
+  /// Refinement stops once lower >= (1 - epsilon) * min(upper, target), on radii (norms of
+  /// q_hat): lower is then within epsilon of min(radius, target).
+  double epsilon = 0.1;
+  /// What the caller minimises over is known to be at most this (a contact found in
+  /// another pair, or the largest radius of interest): resolving beyond it is useless.
+  double target = INFINITY;
+  /// The caller keeps min(this, lower): refinement stops once the lower bound reaches it.
+  double ceiling = INFINITY;
+  /// Most midpoint subdivisions along one branch (each splits one of the two pieces in 4).
+  int max_depth = 16;
+  /// Most constant-mode evaluations for one pair.
+  int max_evaluations = 2048;
+};
+
+struct TrianglePairRadius {
+  double lower = 0.0;  ///< <= the collision radius
+  double upper = 0.0;  ///< a contact configuration's norm (>= the collision radius)
+  int evaluations = 0;
+  int depth = 0;
+};
+
+/// Lower (and upper) bound of the collision radius of two triangles that do not intersect
+/// at rest. Intersecting triangles have radius 0: test with ccd::triangles_intersect first.
+TrianglePairRadius triangle_pair_radius(const ModalTriangle& a, const ModalTriangle& b,
+                                        const TrianglePairRadiusOptions& options = {});
+
+/// The 1D bound: project on the line through the triangles' centroids; the gap between
+/// the projected rest intervals closes at rate at most max over vertex pairs of
+/// ||n^T (U_b,k - U_a,j)||_2 per unit ||q_hat||. Cheap; a lower bound; 0 when the
+/// projections overlap.
+double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b);
+
+}  // namespace sscc

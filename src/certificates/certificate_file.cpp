@@ -1,0 +1,160 @@
+// The certificate file, little-endian binary:
+//   magic "SSCCCERT", u32 format version, u32 byte-order mark 0x01020304,
+//   u64 key (Certificates::key_of), parameters (f64 epsilon, f64 global radius scale,
+//   i32 max depth, i32 max evaluations), i64 node count N, f64 R_global,
+//   f64 R_n[N], f64 sibling radii[N][4], u64 FNV-1a checksum of everything before it.
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "common/fnv1a.hpp"
+#include "sscc/certificates/certificates.hpp"
+
+namespace sscc {
+
+namespace {
+
+constexpr char kMagic[8] = {'S', 'S', 'C', 'C', 'C', 'E', 'R', 'T'};
+constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kByteOrderMark = 0x01020304;
+
+class Writer {
+ public:
+  template <typename T>
+  void put(const T& value) {
+    const auto* p = reinterpret_cast<const char*>(&value);
+    bytes_.insert(bytes_.end(), p, p + sizeof(T));
+  }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
+class Reader {
+ public:
+  Reader(const std::string& bytes, const std::string& path) : bytes_(bytes), path_(path) {}
+  template <typename T>
+  T get(const char* what) {
+    if (offset_ + sizeof(T) > bytes_.size()) fail(std::string("truncated (ends inside ") + what + ")");
+    T value;
+    std::memcpy(&value, bytes_.data() + offset_, sizeof(T));
+    offset_ += sizeof(T);
+    return value;
+  }
+  std::size_t offset() const { return offset_; }
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw CertificateFileError("certificate file " + path_ + ": " + problem);
+  }
+
+ private:
+  const std::string& bytes_;
+  const std::string& path_;
+  std::size_t offset_ = 0;
+};
+
+}  // namespace
+
+std::uint64_t Certificates::key_of(const SubspaceBvh& bvh, const CertificateParameters& parameters) {
+  const SubspaceModel& model = bvh.model();
+  const TriangleMesh& mesh = model.mesh();
+  Fnv1a hash;
+  hash.add_value(kFormatVersion);
+  hash.add_value(mesh.vertex_count());
+  for (const Eigen::Vector3d& p : mesh.vertices()) hash.add(p.data(), 3 * sizeof(double));
+  hash.add_value(mesh.triangle_count());
+  hash.add(mesh.triangles().data(), mesh.triangles().size() * sizeof(Triangle));
+  hash.add_value(model.mode_count());
+  hash.add(model.scaled_basis().data(), static_cast<std::size_t>(model.scaled_basis().size()) * sizeof(double));
+  for (const SubspaceBvh::Node& node : bvh.nodes()) {
+    const int fields[4] = {node.first_child, node.child_count, node.triangle_begin, node.triangle_end};
+    hash.add(fields, sizeof(fields));
+  }
+  hash.add(bvh.triangle_order().data(), bvh.triangle_order().size() * sizeof(int));
+  hash.add_value(parameters.epsilon);
+  hash.add_value(parameters.global_radius_scale);
+  hash.add_value(parameters.max_subdivision_depth);
+  hash.add_value(parameters.max_evaluations_per_pair);
+  return hash.value();
+}
+
+void Certificates::write(const std::string& path) const {
+  Writer w;
+  for (char c : kMagic) w.put(c);
+  w.put(kFormatVersion);
+  w.put(kByteOrderMark);
+  w.put(key_);
+  w.put(parameters_.epsilon);
+  w.put(parameters_.global_radius_scale);
+  w.put(static_cast<std::int32_t>(parameters_.max_subdivision_depth));
+  w.put(static_cast<std::int32_t>(parameters_.max_evaluations_per_pair));
+  w.put(static_cast<std::int64_t>(node_radius_.size()));
+  w.put(global_radius_);
+  for (double r : node_radius_) w.put(r);
+  for (const auto& radii : sibling_radius_) {
+    for (double r : radii) w.put(r);
+  }
+  Fnv1a checksum;
+  checksum.add(w.bytes().data(), w.bytes().size());
+  w.put(checksum.value());
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("certificate file " + path + ": cannot open for writing");
+  out.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size()));
+  if (!out) throw std::runtime_error("certificate file " + path + ": write failed");
+}
+
+Certificates Certificates::read(const std::string& path, const SubspaceBvh& bvh) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CertificateFileError("certificate file " + path + ": cannot open");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Reader r(bytes, path);
+  for (char c : kMagic) {
+    if (r.get<char>("magic") != c) r.fail("not a certificate file (bad magic)");
+  }
+  const auto version = r.get<std::uint32_t>("version");
+  if (version != kFormatVersion) {
+    r.fail("format version " + std::to_string(version) + ", this library reads version " +
+           std::to_string(kFormatVersion));
+  }
+  if (r.get<std::uint32_t>("byte-order mark") != kByteOrderMark) r.fail("written on a machine of another byte order");
+  if (bytes.size() < r.offset() + sizeof(std::uint64_t)) r.fail("truncated");
+  Fnv1a checksum;
+  checksum.add(bytes.data(), bytes.size() - sizeof(std::uint64_t));
+  std::uint64_t stored;
+  std::memcpy(&stored, bytes.data() + bytes.size() - sizeof(stored), sizeof(stored));
+  if (stored != checksum.value()) r.fail("checksum mismatch (truncated or corrupt)");
+
+  const auto key = r.get<std::uint64_t>("key");
+  CertificateParameters parameters;
+  parameters.epsilon = r.get<double>("parameters");
+  parameters.global_radius_scale = r.get<double>("parameters");
+  parameters.max_subdivision_depth = r.get<std::int32_t>("parameters");
+  parameters.max_evaluations_per_pair = r.get<std::int32_t>("parameters");
+  const auto node_count = r.get<std::int64_t>("node count");
+  if (node_count != static_cast<std::int64_t>(bvh.nodes().size())) {
+    r.fail("holds " + std::to_string(node_count) + " nodes, the hierarchy has " + std::to_string(bvh.nodes().size()) +
+           " (stale: computed for another mesh, basis or hierarchy)");
+  }
+  Certificates certificates(bvh, parameters);
+  if (certificates.key_ != key) {
+    r.fail("stale: computed for another mesh, basis, weights or hierarchy (key mismatch)");
+  }
+  const auto valid = [](double x) { return x >= 0.0; };  // NaN fails; infinity means never
+  certificates.global_radius_ = r.get<double>("global radius");
+  if (!valid(certificates.global_radius_)) r.fail("invalid global radius");
+  for (double& radius : certificates.node_radius_) {
+    radius = r.get<double>("node radii");
+    if (!valid(radius) || radius > certificates.global_radius_) r.fail("invalid node radius");
+  }
+  for (auto& radii : certificates.sibling_radius_) {
+    for (double& radius : radii) {
+      radius = r.get<double>("sibling radii");
+      if (!valid(radius) || radius > certificates.global_radius_) r.fail("invalid sibling radius");
+    }
+  }
+  if (r.offset() + sizeof(std::uint64_t) != bytes.size()) r.fail("unexpected bytes after the radii");
+  return certificates;
+}
+
+}  // namespace sscc

@@ -1,0 +1,277 @@
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "sscc/ccd/kernels.hpp"
+#include "sscc/certificates/certificates.hpp"
+#include "sscc/certificates/triangle_pair_bound.hpp"
+
+namespace sscc {
+
+namespace {
+
+/// Smallest ||q_hat|| at which the subspace boxes of nodes a and b can meet: along axis D
+/// the centres' gap g_D closes at rate at most ||(C_a - C_b)_D||_2 and the half extents grow
+/// at rate_a,D + rate_b,D per unit ||q_hat|| (Cauchy-Schwarz), and all three axes must close.
+double box_box_radius(const SubspaceBvh& bvh, int a, int b) {
+  const SubspaceBvh::SubspaceBound x = bvh.subspace_bound(a);
+  const SubspaceBvh::SubspaceBound y = bvh.subspace_bound(b);
+  double radius = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double gap = std::fabs(x.centre[k] - y.centre[k]) - x.half[k] - y.half[k];
+    if (!(gap > 0.0)) continue;
+    const double rate = (x.mean_modes.row(k) - y.mean_modes.row(k)).norm() + x.rate[k] + y.rate[k];
+    radius = std::max(radius, rate > 0.0 ? gap / rate : INFINITY);
+  }
+  // The bound only culls: shrunk so that its own rounding never culls a closer pair.
+  return radius * (1.0 - 1e-9);
+}
+
+/// The minimum radius over the pairs seen so far, as a lower bound and as the smallest
+/// contact configuration found (an upper bound). Lower bounds accurate to epsilon relative
+/// to `contact` keep the minimum accurate to epsilon without resolving every pair to it.
+struct RunningMinimum {
+  double lower;
+  double contact;
+  void add(double pair_lower, double pair_contact) {
+    lower = std::min(lower, pair_lower);
+    contact = std::min(contact, pair_contact);
+  }
+};
+
+struct Counters {
+  long node_pairs_visited = 0, node_pairs_culled = 0, triangle_pairs_culled = 0, triangle_pairs_bounded = 0,
+       evaluations = 0;
+  void add(const Counters& o) {
+    node_pairs_visited += o.node_pairs_visited;
+    node_pairs_culled += o.node_pairs_culled;
+    triangle_pairs_culled += o.triangle_pairs_culled;
+    triangle_pairs_bounded += o.triangle_pairs_bounded;
+    evaluations += o.evaluations;
+  }
+};
+
+class Precomputation {
+ public:
+  Precomputation(const SubspaceBvh& bvh, const CertificateParameters& parameters)
+      : bvh_(bvh), mesh_(bvh.model().mesh()), parameters_(parameters), triangles_(mesh_.triangle_count()) {
+    const RowMajorMatrix& basis = bvh.model().scaled_basis();
+    for (int t = 0; t < mesh_.triangle_count(); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        const int v = mesh_.triangles()[t][i];
+        triangles_[t].rest[i] = mesh_.vertices()[v];
+        triangles_[t].modes[i] = basis.middleRows<3>(3 * v);
+      }
+    }
+  }
+
+  /// Folds the non-adjacent pairs among `pairs` into the running minimum, in order of
+  /// their 1D bound; pairs whose bound reaches the minimum's lower bound cannot lower it.
+  void add_triangle_pairs(const std::vector<std::pair<int, int>>& pairs, RunningMinimum& minimum,
+                          Counters& counters) const {
+    std::vector<std::pair<double, std::pair<int, int>>> ordered;
+    for (const auto& [s, t] : pairs) {
+      if (!mesh_.adjacent(s, t)) ordered.push_back({one_dimensional_radius(triangles_[s], triangles_[t]), {s, t}});
+    }
+    std::sort(ordered.begin(), ordered.end());
+    for (std::size_t i = 0; i < ordered.size(); ++i) {
+      const auto& [estimate, pair] = ordered[i];
+      if (estimate >= minimum.lower) {
+        counters.triangle_pairs_culled += static_cast<long>(ordered.size() - i);
+        return;
+      }
+      const ModalTriangle& a = triangles_[pair.first];
+      const ModalTriangle& b = triangles_[pair.second];
+      // Projections apart means disjoint; otherwise triangles meeting at rest have radius 0.
+      if (estimate == 0.0 &&
+          ccd::triangles_intersect(a.rest[0], a.rest[1], a.rest[2], b.rest[0], b.rest[1], b.rest[2])) {
+        minimum.lower = minimum.contact = 0.0;
+        return;
+      }
+      TrianglePairRadiusOptions options;
+      options.epsilon = parameters_.epsilon;
+      options.target = minimum.contact;
+      options.ceiling = minimum.lower;
+      options.max_depth = parameters_.max_subdivision_depth;
+      options.max_evaluations = parameters_.max_evaluations_per_pair;
+      const TrianglePairRadius r = triangle_pair_radius(a, b, options);
+      ++counters.triangle_pairs_bounded;
+      counters.evaluations += r.evaluations;
+      minimum.add(r.lower, r.upper);
+    }
+  }
+
+  /// Folds the pairs of triangles of two disjoint nodes into the running minimum: children
+  /// pairs in order of their box bound.
+  void add_node_pair(int a, int b, RunningMinimum& minimum, Counters& counters) const {
+    ++counters.node_pairs_visited;
+    const SubspaceBvh::Node& na = bvh_.nodes()[a];
+    const SubspaceBvh::Node& nb = bvh_.nodes()[b];
+    if (na.is_leaf() && nb.is_leaf()) {
+      std::vector<std::pair<int, int>> pairs;
+      const std::vector<int>& order = bvh_.triangle_order();
+      for (int i = na.triangle_begin; i < na.triangle_end; ++i) {
+        for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) pairs.push_back({order[i], order[j]});
+      }
+      add_triangle_pairs(pairs, minimum, counters);
+      return;
+    }
+    const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >=
+                                                                nb.triangle_end - nb.triangle_begin);
+    const SubspaceBvh::Node& split = split_a ? na : nb;
+    const int other = split_a ? b : a;
+    std::vector<std::pair<double, int>> children;
+    for (int c = split.first_child; c < split.first_child + split.child_count; ++c) {
+      children.push_back({box_box_radius(bvh_, c, other), c});
+    }
+    std::sort(children.begin(), children.end());
+    for (const auto& [estimate, c] : children) {
+      if (estimate >= minimum.lower) {
+        ++counters.node_pairs_culled;
+        continue;
+      }
+      add_node_pair(c, other, minimum, counters);
+    }
+  }
+
+  /// Folds a leaf's own non-adjacent pairs into the running minimum.
+  void add_leaf(int n, RunningMinimum& minimum, Counters& counters) const {
+    const SubspaceBvh::Node& node = bvh_.nodes()[n];
+    std::vector<std::pair<int, int>> pairs;
+    const std::vector<int>& order = bvh_.triangle_order();
+    for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
+      for (int j = i + 1; j < node.triangle_end; ++j) pairs.push_back({order[i], order[j]});
+    }
+    add_triangle_pairs(pairs, minimum, counters);
+  }
+
+ private:
+  const SubspaceBvh& bvh_;
+  const TriangleMesh& mesh_;
+  const CertificateParameters& parameters_;
+  std::vector<ModalTriangle> triangles_;
+};
+
+/// The norm at which the floppiest mode moves some vertex by half the bounding-box
+/// diagonal (SSCC paper, section 5.2), times the scale.
+double global_radius_of(const SubspaceModel& model, double scale) {
+  const RowMajorMatrix& basis = model.scaled_basis();
+  double largest = 0.0;
+  for (int j = 0; j < model.mode_count(); ++j) {
+    for (int v = 0; v < model.mesh().vertex_count(); ++v) largest = std::max(largest, basis.middleRows<3>(3 * v).col(j).norm());
+  }
+  const double radius = 0.5 * model.mesh().bounding_box_diagonal();
+  return largest > 0.0 ? scale * radius / largest : INFINITY;
+}
+
+}  // namespace
+
+Certificates::Certificates(const SubspaceBvh& bvh, const CertificateParameters& parameters)
+    : parameters_(parameters),
+      key_(key_of(bvh, parameters)),
+      node_radius_(bvh.nodes().size(), 0.0),
+      first_sibling_(bvh.nodes().size(), 0),
+      sibling_radius_(bvh.nodes().size()) {
+  for (const SubspaceBvh::Node& node : bvh.nodes()) {
+    for (int c = node.first_child; c < node.first_child + node.child_count; ++c) first_sibling_[c] = node.first_child;
+  }
+  for (auto& radii : sibling_radius_) radii.fill(0.0);
+}
+
+Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters,
+                                      const PrecomputeProgress& progress) {
+  if (!(parameters.epsilon > 0.0 && parameters.epsilon < 1.0)) {
+    throw std::invalid_argument("certificates: epsilon must lie in (0, 1), got " + std::to_string(parameters.epsilon));
+  }
+  if (!(parameters.global_radius_scale > 0.0) || !std::isfinite(parameters.global_radius_scale)) {
+    throw std::invalid_argument("certificates: the global radius scale must be positive and finite");
+  }
+  if (parameters.max_subdivision_depth < 0 || parameters.max_evaluations_per_pair < 1) {
+    throw std::invalid_argument("certificates: subdivision limits must be non-negative");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Certificates certificates(bvh, parameters);
+  certificates.global_radius_ = global_radius_of(bvh.model(), parameters.global_radius_scale);
+  const double global = certificates.global_radius_;
+  const Precomputation precomputation(bvh, parameters);
+  const auto& nodes = bvh.nodes();
+
+  // Levels, deepest first: a node's radius needs its children's.
+  std::vector<int> depth(nodes.size(), 0);
+  int levels = 1;
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    for (int c = nodes[n].first_child; c < nodes[n].first_child + nodes[n].child_count; ++c) {
+      depth[c] = depth[n] + 1;
+      levels = std::max(levels, depth[c] + 1);
+    }
+  }
+  Counters totals;
+  std::vector<double> contact(nodes.size(), global);  // per node: smallest contact found
+  for (int level = levels - 1; level >= 0; --level) {
+    // A node's radius is the minimum over its children and its sibling pairs; each pair
+    // is handed the smallest radius known so far (R_global at most), so far pairs stop
+    // early. A stored sibling radius is then min(its radius, what it was handed): still a
+    // lower bound, and never below the parent's radius.
+    std::vector<int> level_nodes;
+    for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+      if (depth[n] == level) level_nodes.push_back(n);
+    }
+#pragma omp parallel
+    {
+      Counters counters;
+#pragma omp for schedule(dynamic, 1)
+      for (long i = 0; i < static_cast<long>(level_nodes.size()); ++i) {
+        const int n = level_nodes[i];
+        const SubspaceBvh::Node& node = nodes[n];
+        RunningMinimum minimum{global, global};
+        if (node.is_leaf()) {
+          precomputation.add_leaf(n, minimum, counters);
+        } else {
+          std::vector<std::pair<double, std::pair<int, int>>> pairs;
+          for (int a = node.first_child; a < node.first_child + node.child_count; ++a) {
+            minimum.add(certificates.node_radius_[a], contact[a]);
+            for (int b = a + 1; b < node.first_child + node.child_count; ++b) {
+              pairs.push_back({box_box_radius(bvh, a, b), {a, b}});
+            }
+          }
+          std::sort(pairs.begin(), pairs.end());
+          for (const auto& [estimate, pair] : pairs) {
+            const auto [a, b] = pair;
+            RunningMinimum pair_minimum = minimum;
+            if (estimate < minimum.lower) precomputation.add_node_pair(a, b, pair_minimum, counters);
+            certificates.sibling_radius_[a][b - node.first_child] = pair_minimum.lower;
+            certificates.sibling_radius_[b][a - node.first_child] = pair_minimum.lower;
+            minimum.add(pair_minimum.lower, pair_minimum.contact);
+          }
+        }
+        certificates.node_radius_[n] = minimum.lower;
+        contact[n] = minimum.contact;
+      }
+#pragma omp critical
+      totals.add(counters);
+    }
+    if (progress) progress(levels - level, levels);
+  }
+  PrecomputeStats& stats = certificates.stats_;
+  stats.node_pairs_visited = totals.node_pairs_visited;
+  stats.node_pairs_culled = totals.node_pairs_culled;
+  stats.triangle_pairs_culled = totals.triangle_pairs_culled;
+  stats.triangle_pairs_bounded = totals.triangle_pairs_bounded;
+  stats.constant_mode_evaluations = totals.evaluations;
+  stats.threads = omp_get_max_threads();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return certificates;
+}
+
+void Certificates::check_belongs_to(const SubspaceBvh& bvh) const {
+  if (static_cast<int>(bvh.nodes().size()) != node_count() || key_of(bvh, parameters_) != key_) {
+    throw std::invalid_argument(
+        "certificates: computed for another mesh, basis, weights or hierarchy (key mismatch)");
+  }
+}
+
+}  // namespace sscc

@@ -1,0 +1,267 @@
+#include "sscc/certificates/triangle_pair_bound.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "sscc/geometry/triangle_distance.hpp"
+
+namespace sscc {
+
+namespace {
+
+using ModeBlock = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+using Weights6 = Eigen::Matrix<double, 6, 1>;
+
+// Added, times the trace, to the Gram matrices of mode combinations: keeps the constant-mode
+// map finite when A is rank-deficient, and errs the dual bound's denominator upwards. The
+// map only chooses the multiplier v (any v gives a valid bound), so this is not what
+// soundness rests on; larger values only weaken the bounds.
+constexpr double kEigenvaluePad = 1e-12;
+// Gram matrices of combinations of the six vertex blocks are formed from their pairwise
+// products; the absolute rounding of a combination with coefficients c is below
+// kGramRounding * (sum |c_i|)^2 * (largest block Gram trace), added as a further pad.
+constexpr double kGramRounding = 256.0 * std::numeric_limits<double>::epsilon();
+// Allowance, relative to the distance of the points from the origin, subtracted from the
+// dual bound's numerator v^T (Xa - Xb) (v of unit length): covers its rounding. Units: length.
+constexpr double kDistanceAllowance = 1e-9;
+// The 1D bound is only a culling estimate; shrinking it by this factor keeps its rounding
+// from culling a pair whose radius lies just below the current minimum.
+constexpr double kOneDimensionalShrink = 1.0 - 1e-9;
+
+/// The two triangles of a pair, reduced to what the bounds need: the six rest vertices and
+/// the Gram matrix of the six 3 x r vertex mode blocks (centred on their mean, which every
+/// combination used here cancels: their coefficients sum to zero). Every mode block of a
+/// point of either triangle is a combination of the six, so the refinement below never
+/// touches r-dimensional data.
+class PairFrame {
+ public:
+  PairFrame(const ModalTriangle& a, const ModalTriangle& b) {
+    const int r = static_cast<int>(a.modes[0].cols());
+    ModeBlock mean = ModeBlock::Zero(3, r);
+    for (int i = 0; i < 3; ++i) mean += (a.modes[i] + b.modes[i]) / 6.0;
+    Eigen::Matrix<double, 18, Eigen::Dynamic> stacked(18, r);
+    for (int i = 0; i < 3; ++i) {
+      stacked.middleRows<3>(3 * i) = a.modes[i] - mean;
+      stacked.middleRows<3>(9 + 3 * i) = b.modes[i] - mean;
+      rest_[i] = a.rest[i];
+      rest_[3 + i] = b.rest[i];
+    }
+    gram_.noalias() = stacked * stacked.transpose();
+    double largest = 0.0;
+    for (int i = 0; i < 6; ++i) largest = std::max(largest, gram_.block<3, 3>(3 * i, 3 * i).trace());
+    rounding_ = kGramRounding * largest;
+  }
+
+  /// Gram matrix of the combination sum_i c_i U_i, and the pad covering its rounding.
+  Eigen::Matrix3d gram(const Weights6& c, double& pad) const {
+    Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 6; ++i) {
+      if (c[i] == 0.0) continue;
+      for (int j = 0; j < 6; ++j) {
+        if (c[j] != 0.0) g += (c[i] * c[j]) * gram_.block<3, 3>(3 * i, 3 * j);
+      }
+    }
+    pad = rounding_ * c.cwiseAbs().sum() * c.cwiseAbs().sum() + kEigenvaluePad * g.trace() +
+          std::numeric_limits<double>::min();
+    return g;
+  }
+
+  Eigen::Vector3d point(const Weights6& w) const {
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 6; ++i) p += w[i] * rest_[i];
+    return p;
+  }
+
+ private:
+  Eigen::Matrix<double, 18, 18> gram_;
+  std::array<Eigen::Vector3d, 6> rest_;
+  double rounding_ = 0.0;
+};
+
+/// A piece of one triangle: row k holds the barycentric weights of the piece's vertex k.
+using Piece = Eigen::Matrix3d;
+
+/// The weights of a point of the first (second) triangle in the six-vertex frame.
+Weights6 on_first(const Eigen::Vector3d& w) { return (Weights6() << w, 0.0, 0.0, 0.0).finished(); }
+Weights6 on_second(const Eigen::Vector3d& w) { return (Weights6() << 0.0, 0.0, 0.0, w).finished(); }
+
+struct Evaluation {
+  double lower;
+  double upper;
+};
+
+/// The dual bound: for any v, a contact q_hat of points Xa, Xb satisfies
+///   v^T (Xa - Xb) = v^T (U(Xb) - U(Xa)) q_hat <= ||(U(Xb) - U(Xa))^T v|| ||q_hat||.
+/// Over the two pieces the ratio N / D, N = v^T (Xa - Xb) linear and D = ||(U(Xb) - U(Xa))^T v||
+/// convex in the barycentric weights, is quasi-concave where N > 0 (N - t D >= 0 is a convex
+/// set for t >= 0), so its minimum over the product of the pieces is at one of the 9 vertex
+/// pairs; where N <= 0 at some vertex pair the pieces may meet with no motion: bound 0.
+/// For a fixed v the bound loses only second order in the pieces' size. With v = (A A^T)^(-1)
+/// d_c, the constant-mode optimum's multiplier, it is never weaker than the paper's
+/// perturbation bound (eq. 10): the numerator is at least R_c^2 and the denominator at most
+/// R_c + |dU| ||v||, with ||v|| <= R_c / sigma_min(A).
+double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, const Eigen::Vector3d& v) {
+  const double length = v.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
+  const Eigen::Vector3d unit = v / length;
+  double bound = INFINITY;
+  for (int j = 0; j < 3; ++j) {
+    const Weights6 xa = on_first(pa.row(j).transpose());
+    for (int k = 0; k < 3; ++k) {
+      const Weights6 xb = on_second(pb.row(k).transpose());
+      const Eigen::Vector3d pa_point = frame.point(xa), pb_point = frame.point(xb);
+      const double numerator =
+          unit.dot(pa_point - pb_point) - kDistanceAllowance * (pa_point.norm() + pb_point.norm());
+      if (!(numerator > 0.0)) return 0.0;
+      double pad;
+      const Eigen::Matrix3d g = frame.gram(xb - xa, pad);
+      const double denominator = std::sqrt(std::max(0.0, unit.dot(g * unit)) + pad);
+      bound = std::min(bound, numerator / denominator);
+    }
+  }
+  return bound;
+}
+
+/// Bounds for pieces pa and pb of the frame's triangles: the dual bound at the
+/// constant-mode optimum's multiplier and at the upper bound's, and the paper's upper
+/// bound R_hi (the true modes at the constant-mode closest points).
+Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
+  const Eigen::Vector3d centroid_a = pa.colwise().mean().transpose();
+  const Eigen::Vector3d centroid_b = pb.colwise().mean().transpose();
+  double pad;
+  const Eigen::Matrix3d gram = frame.gram(on_second(centroid_b) - on_first(centroid_a), pad);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(gram);
+  const Eigen::Vector3d eigenvalues = solver.eigenvalues().cwiseMax(0.0) + Eigen::Vector3d::Constant(pad);
+  // Contact of Xa and Xb under constant modes needs A q_hat = Xa - Xb (A = mean_b - mean_a),
+  // whose smallest solution has norm ||(A A^T)^(-1/2) (Xa - Xb)||: a triangle distance after
+  // that map. Only its closest points are used (the bound itself is the dual bound).
+  const Eigen::Matrix3d map =
+      solver.eigenvectors() * eigenvalues.array().rsqrt().matrix().asDiagonal() * solver.eigenvectors().transpose();
+  const Eigen::Vector3d origin = frame.point(on_first(pa.row(0).transpose()));
+  std::array<Eigen::Vector3d, 3> mapped_a, mapped_b;
+  for (int i = 0; i < 3; ++i) {
+    mapped_a[i] = map * (frame.point(on_first(pa.row(i).transpose())) - origin);
+    mapped_b[i] = map * (frame.point(on_second(pb.row(i).transpose())) - origin);
+  }
+  const TriangleClosestPoints closest = closest_points_disjoint_triangles(mapped_a, mapped_b);
+  const Weights6 xa = on_first(pa.transpose() * closest.first_weights);
+  const Weights6 xb = on_second(pb.transpose() * closest.second_weights);
+  const Eigen::Vector3d d = frame.point(xa) - frame.point(xb);
+  const Eigen::Vector3d constant_mode_multiplier =
+      solver.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() * solver.eigenvectors().transpose() * d;
+  Evaluation e;
+  e.lower = dual_bound(frame, pa, pb, constant_mode_multiplier);
+  double unused;
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(frame.gram(xb - xa, unused));
+  e.upper = INFINITY;
+  if (ldlt.info() == Eigen::Success && ldlt.isPositive() && ldlt.vectorD().minCoeff() > 0.0) {
+    const Eigen::Vector3d true_mode_multiplier = ldlt.solve(d);
+    const double squared = d.dot(true_mode_multiplier);
+    if (squared >= 0.0 && std::isfinite(squared)) e.upper = std::sqrt(squared);
+    e.lower = std::max(e.lower, dual_bound(frame, pa, pb, true_mode_multiplier));
+  }
+  return e;
+}
+
+/// Longest rest edge of a piece: the one to split.
+double longest_edge(const PairFrame& frame, const Piece& piece, bool second) {
+  double longest = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d x = piece.row(i).transpose(), y = piece.row((i + 1) % 3).transpose();
+    const Eigen::Vector3d e = second ? frame.point(on_second(x)) - frame.point(on_second(y))
+                                     : frame.point(on_first(x)) - frame.point(on_first(y));
+    longest = std::max(longest, e.norm());
+  }
+  return longest;
+}
+
+/// The four pieces joining a piece's edge midpoints.
+std::array<Piece, 4> split(const Piece& p) {
+  const Eigen::RowVector3d m01 = 0.5 * (p.row(0) + p.row(1));
+  const Eigen::RowVector3d m12 = 0.5 * (p.row(1) + p.row(2));
+  const Eigen::RowVector3d m20 = 0.5 * (p.row(2) + p.row(0));
+  const auto make = [](const Eigen::RowVector3d& x, const Eigen::RowVector3d& y, const Eigen::RowVector3d& z) {
+    Piece piece;
+    piece << x, y, z;
+    return piece;
+  };
+  return {make(p.row(0), m01, m20), make(m01, p.row(1), m12), make(m20, m12, p.row(2)), make(m01, m12, m20)};
+}
+
+struct OpenPair {
+  Piece a, b;
+  Evaluation bound;
+  int depth;
+};
+
+}  // namespace
+
+TrianglePairRadius triangle_pair_radius(const ModalTriangle& a, const ModalTriangle& b,
+                                        const TrianglePairRadiusOptions& options) {
+  const PairFrame frame(a, b);
+  TrianglePairRadius result;
+  const Piece whole = Piece::Identity();
+  const Evaluation root = evaluate(frame, whole, whole);
+  result.evaluations = 1;
+  result.upper = root.upper;
+  // Best first: the open pair with the smallest lower bound is refined until its bound is
+  // within epsilon of min(best contact found, target), reaches the ceiling, or cannot be
+  // refined. The open pairs cover both triangles, so the smallest open lower bound is a
+  // lower bound. A refinement splits the larger piece (4 new pairs).
+  const auto later = [](const OpenPair& x, const OpenPair& y) { return x.bound.lower > y.bound.lower; };
+  std::vector<OpenPair> open;
+  open.push_back({whole, whole, root, 0});
+  while (true) {
+    std::pop_heap(open.begin(), open.end(), later);
+    const OpenPair smallest = open.back();
+    open.pop_back();
+    const double lower = smallest.bound.lower;
+    // Within epsilon of min(radius, target), which is all the caller needs.
+    const bool accurate = lower >= (1.0 - options.epsilon) * std::min(result.upper, options.target);
+    const bool exhausted = smallest.depth >= options.max_depth || result.evaluations + 4 > options.max_evaluations;
+    if (accurate || exhausted || lower >= options.ceiling) {
+      result.lower = lower;
+      return result;
+    }
+    const bool split_a = longest_edge(frame, smallest.a, false) >= longest_edge(frame, smallest.b, true);
+    for (const Piece& piece : split(split_a ? smallest.a : smallest.b)) {
+      OpenPair child{split_a ? piece : smallest.a, split_a ? smallest.b : piece, {}, smallest.depth + 1};
+      child.bound = evaluate(frame, child.a, child.b);
+      ++result.evaluations;
+      result.upper = std::min(result.upper, child.bound.upper);
+      open.push_back(child);
+      std::push_heap(open.begin(), open.end(), later);
+    }
+    result.depth = std::max(result.depth, smallest.depth + 1);
+  }
+}
+
+double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
+  const Eigen::Vector3d axis = (b.rest[0] + b.rest[1] + b.rest[2]) - (a.rest[0] + a.rest[1] + a.rest[2]);
+  const double length = axis.norm();
+  if (!(length > 0.0)) return 0.0;
+  const Eigen::Vector3d n = axis / length;
+  double a_high = -INFINITY, b_low = INFINITY;
+  for (int i = 0; i < 3; ++i) {
+    a_high = std::max(a_high, n.dot(a.rest[i]));
+    b_low = std::min(b_low, n.dot(b.rest[i]));
+  }
+  const double gap = b_low - a_high;
+  if (!(gap > 0.0)) return 0.0;
+  std::array<Eigen::RowVectorXd, 3> along_a, along_b;
+  for (int i = 0; i < 3; ++i) {
+    along_a[i] = n.transpose() * a.modes[i];
+    along_b[i] = n.transpose() * b.modes[i];
+  }
+  double rate = 0.0;
+  for (const auto& ua : along_a) {
+    for (const auto& ub : along_b) rate = std::max(rate, (ub - ua).norm());
+  }
+  return rate > 0.0 ? kOneDimensionalShrink * gap / rate : INFINITY;
+}
+
+}  // namespace sscc

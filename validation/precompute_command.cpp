@@ -1,0 +1,53 @@
+#include "precompute_command.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+namespace sscc::validation {
+
+void print_radius_per_level(const SubspaceBvh& bvh, const Certificates& certificates, std::ostream& out) {
+  const auto& nodes = bvh.nodes();
+  std::vector<int> depth(nodes.size(), 0);
+  std::vector<std::vector<double>> radii(1);
+  radii[0].push_back(certificates.node_radius(0));
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    for (int c = nodes[n].first_child; c < nodes[n].first_child + nodes[n].child_count; ++c) {
+      depth[c] = depth[n] + 1;
+      if (static_cast<int>(radii.size()) <= depth[c]) radii.resize(depth[c] + 1);
+      radii[depth[c]].push_back(certificates.node_radius(c));
+    }
+  }
+  for (std::size_t level = 0; level < radii.size(); ++level) {
+    std::vector<double>& r = radii[level];
+    std::sort(r.begin(), r.end());
+    char line[200];
+    std::snprintf(line, sizeof line, "level %zu: nodes=%zu min_radius=%.6g median_radius=%.6g max_radius=%.6g", level,
+                  r.size(), r.front(), r[r.size() / 2], r.back());
+    out << line << '\n';
+  }
+}
+
+long run_precompute(const PrecomputeCommandOptions& o, std::ostream& out, std::ostream& progress) {
+  const SubspaceModel model = load_model(o.model, progress);
+  const SubspaceBvh bvh(model);
+  progress << "bvh: " << bvh.build_stats().nodes << " nodes, depth " << bvh.build_stats().depth << '\n';
+  const Certificates certificates = Certificates::precompute(bvh, o.parameters, [&](int done, int levels) {
+    progress << "precompute: level " << done << "/" << levels << " done\n" << std::flush;
+  });
+  certificates.write(o.output);
+  const PrecomputeStats& s = certificates.stats();
+  progress << "precompute: " << s.threads << " threads, node pairs visited " << s.node_pairs_visited << " (culled "
+           << s.node_pairs_culled << "), triangle pairs bounded " << s.triangle_pairs_bounded << " (culled by 1D "
+           << s.triangle_pairs_culled << "), constant-mode evaluations " << s.constant_mode_evaluations
+           << ", global radius " << certificates.global_radius() << '\n';
+  print_radius_per_level(bvh, certificates, out);
+  char line[256];
+  std::snprintf(line, sizeof line, "precompute: triangles=%d nodes=%d r=%d time_s=%.3f root_radius=%.6g",
+                model.mesh().triangle_count(), certificates.node_count(), model.mode_count(), s.seconds,
+                certificates.node_radius(0));
+  out << line << '\n';
+  return 0;
+}
+
+}  // namespace sscc::validation
