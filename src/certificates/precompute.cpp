@@ -184,10 +184,10 @@ Certificates::Certificates(const SubspaceBvh& bvh, const CertificateParameters& 
 
 Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters,
                                       const PrecomputeProgress& progress) {
-  if (!(parameters.epsilon > 0.0 && parameters.epsilon < 1.0)) {
+  if (!std::isfinite(parameters.epsilon) || parameters.epsilon <= 0.0 || parameters.epsilon >= 1.0) {
     throw std::invalid_argument("certificates: epsilon must lie in (0, 1), got " + std::to_string(parameters.epsilon));
   }
-  if (!(parameters.global_radius_scale > 0.0) || !std::isfinite(parameters.global_radius_scale)) {
+  if (!std::isfinite(parameters.global_radius_scale) || parameters.global_radius_scale <= 0.0) {
     throw std::invalid_argument("certificates: the global radius scale must be positive and finite");
   }
   if (parameters.max_subdivision_depth < 0 || parameters.max_evaluations_per_pair < 1) {

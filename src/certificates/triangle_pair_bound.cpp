@@ -16,15 +16,17 @@ namespace {
 using ModeBlock = Eigen::Matrix<double, 3, Eigen::Dynamic>;
 using Weights6 = Eigen::Matrix<double, 6, 1>;
 
-// Added, times the trace, to the Gram matrices of mode combinations: keeps the constant-mode
-// map finite when A is rank-deficient, and errs the dual bound's denominator upwards. The
-// map only chooses the multiplier v (any v gives a valid bound), so this is not what
-// soundness rests on; larger values only weaken the bounds.
+// Added, times the trace, to the Gram matrices of mode combinations, with kGramRounding:
+// errs the dual bound's denominator upwards (so the bound downwards) by more than the
+// rounding of v^T G v. Larger values only weaken the bounds.
 constexpr double kEigenvaluePad = 1e-12;
 // Gram matrices of combinations of the six vertex blocks are formed from their pairwise
 // products; the absolute rounding of a combination with coefficients c is below
 // kGramRounding * (sum |c_i|)^2 * (largest block Gram trace), added as a further pad.
 constexpr double kGramRounding = 256.0 * std::numeric_limits<double>::epsilon();
+// Smallest eigenvalue of the constant-mode Gram matrix used in its map, relative to the
+// largest. Only conditions the choice of multiplier: not a soundness matter.
+constexpr double kMapConditioning = 1e-12;
 // Allowance, relative to the distance of the points from the origin, subtracted from the
 // dual bound's numerator v^T (Xa - Xb) (v of unit length): covers its rounding. Units: length.
 constexpr double kDistanceAllowance = 1e-9;
@@ -132,10 +134,15 @@ double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, cons
 Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   const Eigen::Vector3d centroid_a = pa.colwise().mean().transpose();
   const Eigen::Vector3d centroid_b = pb.colwise().mean().transpose();
-  double pad;
-  const Eigen::Matrix3d gram = frame.gram(on_second(centroid_b) - on_first(centroid_a), pad);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(gram);
-  const Eigen::Vector3d eigenvalues = solver.eigenvalues().cwiseMax(0.0) + Eigen::Vector3d::Constant(pad);
+  double unused;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(
+      frame.gram(on_second(centroid_b) - on_first(centroid_a), unused));
+  // Floored relative to the largest (identity when nothing moves): the map stays finite and
+  // its conditioning bounded; it only chooses the multiplier, so any floor is sound.
+  const double largest = solver.eigenvalues()[2];
+  const Eigen::Vector3d eigenvalues =
+      largest > 0.0 ? Eigen::Vector3d(solver.eigenvalues().cwiseMax(kMapConditioning * largest))
+                    : Eigen::Vector3d::Ones();
   // Contact of Xa and Xb under constant modes needs A q_hat = Xa - Xb (A = mean_b - mean_a),
   // whose smallest solution has norm ||(A A^T)^(-1/2) (Xa - Xb)||: a triangle distance after
   // that map. Only its closest points are used (the bound itself is the dual bound).
@@ -155,14 +162,25 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
       solver.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() * solver.eigenvectors().transpose() * d;
   Evaluation e;
   e.lower = dual_bound(frame, pa, pb, constant_mode_multiplier);
-  double unused;
-  const Eigen::LDLT<Eigen::Matrix3d> ldlt(frame.gram(xb - xa, unused));
-  e.upper = INFINITY;
-  if (ldlt.info() == Eigen::Success && ldlt.isPositive() && ldlt.vectorD().minCoeff() > 0.0) {
-    const Eigen::Vector3d true_mode_multiplier = ldlt.solve(d);
-    const double squared = d.dot(true_mode_multiplier);
-    if (squared >= 0.0 && std::isfinite(squared)) e.upper = std::sqrt(squared);
-    e.lower = std::max(e.lower, dual_bound(frame, pa, pb, true_mode_multiplier));
+  // The paper's R_hi with the true modes at those points: the least-norm solution of
+  // (U(Xb) - U(Xa)) q_hat = d through the eigen-decomposition of its Gram matrix (a
+  // component of d in its null space means no solution).
+  double true_pad;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> true_modes(frame.gram(xb - xa, true_pad));
+  const Eigen::Vector3d along = true_modes.eigenvectors().transpose() * d;
+  Eigen::Vector3d inverse_along = Eigen::Vector3d::Zero();
+  e.upper = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    if (true_modes.eigenvalues()[i] > true_pad) {
+      inverse_along[i] = along[i] / true_modes.eigenvalues()[i];
+      e.upper += along[i] * inverse_along[i];
+    } else if (std::fabs(along[i]) > kDistanceAllowance * d.norm()) {
+      e.upper = INFINITY;
+    }
+  }
+  e.upper = std::sqrt(e.upper);
+  if (std::isfinite(e.upper)) {
+    e.lower = std::max(e.lower, dual_bound(frame, pa, pb, true_modes.eigenvectors() * inverse_along));
   }
   return e;
 }

@@ -34,3 +34,28 @@ inline TriangleMesh uv_sphere(int rings, int segments) {
 }
 
 }  // namespace sscc::test
+
+namespace sscc::test {
+
+/// Two parallel square sheets, [0, 1]^2 at z = 0 and at z = gap, each an n x n grid of
+/// square cells split in two triangles; the sheets share no vertex.
+inline TriangleMesh parallel_sheets(int n, double gap) {
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Triangle> t;
+  for (int sheet = 0; sheet < 2; ++sheet) {
+    const int base = static_cast<int>(v.size());
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; j <= n; ++j) v.emplace_back(double(i) / n, double(j) / n, sheet * gap);
+    }
+    const auto at = [&](int i, int j) { return base + i * (n + 1) + j; };
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        t.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        t.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+  return TriangleMesh(std::move(v), std::move(t));
+}
+
+}  // namespace sscc::test

@@ -1,0 +1,204 @@
+#include <catch2/catch.hpp>
+
+#include "certificate_fixtures.hpp"
+#include "sscc/ccd/kernels.hpp"
+#include "sscc/query/self_ccd.hpp"
+
+namespace {
+
+using sscc::test::CertifiedModel;
+
+/// The non-adjacent triangle pairs, one from each list (or within one list when the lists are
+/// the same), that intersect at configuration q (exact test).
+int intersecting_pairs(const sscc::SubspaceModel& model, const std::vector<int>& first, const std::vector<int>& second,
+                       bool same, const Eigen::VectorXd& q) {
+  const sscc::TriangleMesh& mesh = model.mesh();
+  const std::vector<Eigen::Vector3d> x = model.deformed_positions(q);
+  int found = 0;
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    for (std::size_t j = same ? i + 1 : 0; j < second.size(); ++j) {
+      const int a = first[i], b = second[j];
+      if (mesh.adjacent(a, b)) continue;
+      const sscc::Triangle& ta = mesh.triangles()[a];
+      const sscc::Triangle& tb = mesh.triangles()[b];
+      found += sscc::ccd::triangles_intersect(x[ta[0]], x[ta[1]], x[ta[2]], x[tb[0]], x[tb[1]], x[tb[2]]);
+    }
+  }
+  return found;
+}
+
+std::vector<int> triangles_under(const sscc::SubspaceBvh& bvh, int n) {
+  const sscc::SubspaceBvh::Node& node = bvh.nodes()[n];
+  return {bvh.triangle_order().begin() + node.triangle_begin, bvh.triangle_order().begin() + node.triangle_end};
+}
+
+/// Configurations inside the ellipsoid ||q||_M < radius: on its boundary (just inside) and
+/// uniform in its volume. Returned as reduced coordinates q.
+std::vector<Eigen::VectorXd> inside(const sscc::SubspaceModel& model, double radius, int count, std::mt19937_64& rng) {
+  const int r = model.mode_count();
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<Eigen::VectorXd> q;
+  for (int i = 0; i < count; ++i) {
+    const double norm = i % 2 == 0 ? radius * (1.0 - 1e-9) : radius * std::pow(uniform(rng), 1.0 / r);
+    q.push_back(sscc::test::random_scaled_coordinates(rng, r, norm).cwiseQuotient(model.weights().cwiseSqrt()));
+  }
+  return q;
+}
+
+/// Every node and sibling pair: sampled configurations inside its certificate have no
+/// touching non-adjacent pair under it.
+void check_certificates_by_sampling(const CertifiedModel& m, int samples, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const auto& nodes = m.bvh.nodes();
+  int checked = 0;
+  for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+    const std::vector<int> under = triangles_under(m.bvh, n);
+    for (const Eigen::VectorXd& q : inside(m.model, m.certificates.node_radius(n), samples, rng)) {
+      INFO("node " << n << " radius " << m.certificates.node_radius(n));
+      REQUIRE(intersecting_pairs(m.model, under, under, true, q) == 0);
+      ++checked;
+    }
+    for (int a = nodes[n].first_child; a < nodes[n].first_child + nodes[n].child_count; ++a) {
+      for (int b = a + 1; b < nodes[n].first_child + nodes[n].child_count; ++b) {
+        for (const Eigen::VectorXd& q : inside(m.model, m.certificates.sibling_radius(a, b), samples, rng)) {
+          INFO("siblings " << a << ", " << b << " radius " << m.certificates.sibling_radius(a, b));
+          REQUIRE(intersecting_pairs(m.model, triangles_under(m.bvh, a), triangles_under(m.bvh, b), false, q) == 0);
+          ++checked;
+        }
+      }
+    }
+  }
+  REQUIRE(checked > 100);
+}
+
+}  // namespace
+
+TEST_CASE("certificates: configurations inside every node and sibling certificate are free of contact",
+          "[certificates]") {
+  SECTION("two sheets, 3 modes (random directions cover the sphere of directions densely)") {
+    check_certificates_by_sampling(*sscc::test::certified_sheets(Eigen::Vector3d(1, 1, 1)), 24, 1);
+  }
+  SECTION("two sheets, weighted modes") {
+    check_certificates_by_sampling(*sscc::test::certified_sheets(Eigen::Vector3d(4, 0.5, 2)), 24, 2);
+  }
+  SECTION("sphere, 27 polynomial modes") { check_certificates_by_sampling(*sscc::test::certified_sphere(), 8, 3); }
+}
+
+TEST_CASE("certificates: never above a known contact, in the weighted norm", "[certificates]") {
+  for (double w : {1.0, 4.0, 0.25}) {
+    const auto m = sscc::test::certified_sheets(Eigen::Vector3d(w, 1, 1));
+    // Mode 0 at q_0 = 1 lowers the top sheet onto the bottom one: ||q||_M = sqrt(w).
+    const Eigen::VectorXd touching = Eigen::Vector3d(1, 0, 0);
+    const sscc::SelfCcd ccd(m->bvh, m->certificates);
+    sscc::SelfCcdOptions traditional;
+    traditional.use_certificates = false;
+    REQUIRE(ccd.query_discrete(touching, traditional).collided());
+    INFO("weight " << w << " root radius " << m->certificates.node_radius(0));
+    REQUIRE(m->certificates.node_radius(0) <= std::sqrt(w));
+    REQUIRE(m->certificates.node_radius(0) >= 0.3 * std::sqrt(w));  // not vacuous
+  }
+}
+
+TEST_CASE("certificates: steps with both ends inside the root certificate have no contact", "[certificates]") {
+  const auto sheets = sscc::test::certified_sheets(Eigen::Vector3d(1, 1, 1));
+  const auto sphere = sscc::test::certified_sphere();
+  std::mt19937_64 rng(9);
+  for (const CertifiedModel* m : {sheets.get(), sphere.get()}) {
+    const sscc::SelfCcd ccd(m->bvh, m->certificates);
+    const double radius = m->certificates.node_radius(0);
+    const std::vector<Eigen::VectorXd> ends = inside(m->model, radius, 24, rng);
+    for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+      INFO("step " << i);
+      REQUIRE_FALSE(ccd.query_exhaustive(ends[i], ends[i + 1]).collided());
+      const sscc::SelfCcdReport certified = ccd.query(ends[i], ends[i + 1]);
+      REQUIRE(certified.stats.root_certified);
+      REQUIRE_FALSE(certified.collided());
+    }
+  }
+}
+
+TEST_CASE("certificates: the culled query reports exactly what the traditional one does", "[certificates]") {
+  const auto m = sscc::test::certified_sphere();
+  const sscc::SelfCcd ccd(m->bvh, m->certificates);
+  sscc::SelfCcdOptions traditional;
+  traditional.use_certificates = false;
+  std::mt19937_64 rng(17);
+  const double radius = m->certificates.node_radius(0);
+  int certified = 0, partly = 0, colliding = 0;
+  for (double norm : {0.5 * radius, 0.9 * radius, 1.5 * radius, 3.0 * radius, 0.4, 0.8, 1.2}) {
+    for (int step = 0; step < 4; ++step) {
+      const Eigen::VectorXd q0 = sscc::test::random_scaled_coordinates(rng, 27, norm);
+      const Eigen::VectorXd q1 = sscc::test::random_scaled_coordinates(rng, 27, norm);
+      for (sscc::NodeBounds bounds : {sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
+        sscc::SelfCcdOptions with = {};
+        with.bounds = bounds;
+        sscc::SelfCcdOptions without = traditional;
+        without.bounds = bounds;
+        const sscc::SelfCcdReport a = ccd.query(q0, q1, with);
+        const sscc::SelfCcdReport b = ccd.query(q0, q1, without);
+        INFO("norm " << norm << " step " << step);
+        REQUIRE(a.pairs == b.pairs);
+        REQUIRE(a.features == b.features);
+        REQUIRE(ccd.query_discrete(q1, with).pairs == ccd.query_discrete(q1, without).pairs);
+        certified += a.stats.root_certified;
+        partly += !a.stats.root_certified && a.stats.certified > 0;
+        colliding += a.collided();
+        REQUIRE(b.stats.certified == 0);
+      }
+    }
+  }
+  REQUIRE(certified > 0);
+  REQUIRE(partly > 0);
+  REQUIRE(colliding > 0);
+}
+
+TEST_CASE("certificates: radii grow down the tree and stay below the global radius", "[certificates]") {
+  const auto m = sscc::test::certified_sphere();
+  const sscc::Certificates& c = m->certificates;
+  const auto& nodes = m->bvh.nodes();
+  REQUIRE(c.node_count() == static_cast<int>(nodes.size()));
+  REQUIRE(c.node_radius(0) > 0.0);
+  for (int n = 0; n < c.node_count(); ++n) {
+    REQUIRE(c.node_radius(n) <= c.global_radius());
+    for (int a = nodes[n].first_child; a < nodes[n].first_child + nodes[n].child_count; ++a) {
+      REQUIRE(c.node_radius(a) >= c.node_radius(n));
+      for (int b = nodes[n].first_child; b < nodes[n].first_child + nodes[n].child_count; ++b) {
+        if (a == b) continue;
+        REQUIRE(c.sibling_radius(a, b) == c.sibling_radius(b, a));
+        REQUIRE(c.sibling_radius(a, b) >= c.node_radius(n));
+        REQUIRE(c.sibling_radius(a, b) <= c.global_radius());
+      }
+    }
+  }
+  REQUIRE(c.sibling_radius(0, 1) == 0.0);  // not siblings: no certificate
+}
+
+TEST_CASE("certificates: the precomputation is deterministic", "[certificates]") {
+  const auto m = sscc::test::certified_sphere();
+  const sscc::Certificates again = sscc::Certificates::precompute(m->bvh);
+  for (int n = 0; n < again.node_count(); ++n) REQUIRE(again.node_radius(n) == m->certificates.node_radius(n));
+  REQUIRE(again.key() == m->certificates.key());
+}
+
+TEST_CASE("certificates: bad parameters and misuse are refused with a message", "[certificates]") {
+  const auto m = sscc::test::certified_sheets(Eigen::Vector3d(1, 1, 1));
+  for (double epsilon : {0.0, 1.0, -0.1, std::nan("")}) {
+    sscc::CertificateParameters p;
+    p.epsilon = epsilon;
+    REQUIRE_THROWS_WITH(sscc::Certificates::precompute(m->bvh, p), Catch::Contains("epsilon"));
+  }
+  sscc::CertificateParameters p;
+  p.global_radius_scale = 0.0;
+  REQUIRE_THROWS_WITH(sscc::Certificates::precompute(m->bvh, p), Catch::Contains("global radius"));
+
+  const auto other = sscc::test::certified_sheets(Eigen::Vector3d(2, 1, 1));
+  REQUIRE_THROWS_WITH(sscc::SelfCcd(m->bvh, other->certificates), Catch::Contains("another mesh"));
+
+  const sscc::SelfCcd ccd(m->bvh, m->certificates);
+  sscc::SelfCcdOptions separation;
+  separation.kernel.minimum_separation = 1e-3;
+  const Eigen::VectorXd q = Eigen::Vector3d(0.1, 0, 0);
+  REQUIRE_THROWS_WITH(ccd.query(q, q, separation), Catch::Contains("minimum separation"));
+  separation.use_certificates = false;
+  REQUIRE_NOTHROW(ccd.query(q, q, separation));
+}

@@ -1,0 +1,145 @@
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <random>
+
+#include "sscc/ccd/kernels.hpp"
+#include "sscc/certificates/triangle_pair_bound.hpp"
+#include "support/contact_search.hpp"
+
+namespace {
+
+using sscc::ModalTriangle;
+
+struct PairMaker {
+  std::mt19937_64 rng;
+  std::normal_distribution<double> normal;
+  explicit PairMaker(std::uint64_t seed) : rng(seed) {}
+
+  Eigen::Vector3d point(double spread) {
+    Eigen::Vector3d p;
+    for (int k = 0; k < 3; ++k) p[k] = spread * normal(rng);
+    return p;
+  }
+
+  /// Modes: random, or smooth (a random linear and quadratic field of the position, as
+  /// real bases are), r columns.
+  ModalTriangle with_modes(const std::array<Eigen::Vector3d, 3>& rest, const std::vector<Eigen::Matrix3d>& linear,
+                           const std::vector<Eigen::Matrix3d>& quadratic, bool smooth, double noise) {
+    ModalTriangle t;
+    t.rest = rest;
+    const int r = static_cast<int>(linear.size());
+    for (int i = 0; i < 3; ++i) {
+      t.modes[i].resize(3, r);
+      for (int j = 0; j < r; ++j) {
+        const Eigen::Vector3d& x = rest[i];
+        Eigen::Vector3d u = linear[j] * x + quadratic[j] * x.cwiseProduct(x);
+        if (!smooth) u = point(1.0);
+        t.modes[i].col(j) = u + noise * point(1.0);
+      }
+    }
+    return t;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("triangle-pair radius: the lower bound never exceeds a searched contact, and meets epsilon",
+          "[certificates]") {
+  PairMaker m(11);
+  int tested = 0, accurate = 0;
+  for (int trial = 0; trial < 240; ++trial) {
+    const int r = 1 + trial % 8;
+    std::vector<Eigen::Matrix3d> linear(r), quadratic(r);
+    for (int j = 0; j < r; ++j) {
+      linear[j] = Eigen::Matrix3d::NullaryExpr([&] { return m.normal(m.rng); });
+      quadratic[j] = Eigen::Matrix3d::NullaryExpr([&] { return 0.5 * m.normal(m.rng); });
+    }
+    std::array<Eigen::Vector3d, 3> a{m.point(0.3), m.point(0.3), m.point(0.3)};
+    std::array<Eigen::Vector3d, 3> b;
+    const Eigen::Vector3d offset = m.point(0.4);
+    switch (trial % 4) {
+      case 0:  // random
+        b = {a[0] + offset + m.point(0.2), a[1] + offset + m.point(0.2), a[2] + offset + m.point(0.2)};
+        break;
+      case 1: {  // nearly parallel, a small gap along the normal
+        const Eigen::Vector3d n = (a[1] - a[0]).cross(a[2] - a[0]).normalized();
+        const Eigen::Vector3d shift = 1e-3 * n + 0.05 * offset.cross(n);
+        b = {a[0] + shift, a[1] + shift, a[2] + shift};
+        break;
+      }
+      case 2:  // a needle
+        b = {a[0] + offset, a[0] + offset + m.point(0.3), a[0] + offset + m.point(1e-7)};
+        break;
+      default:  // touching at rest: b's first vertex on a's face
+        b = {0.3 * a[0] + 0.3 * a[1] + 0.4 * a[2], a[0] + offset, a[1] + offset + m.point(0.1)};
+        break;
+    }
+    const bool touching = trial % 4 == 3;
+    if (!touching && sscc::ccd::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) continue;
+    const bool smooth = trial % 3 != 0;
+    const ModalTriangle ta = m.with_modes(a, linear, quadratic, smooth, 0.01);
+    const ModalTriangle tb = m.with_modes(b, linear, quadratic, smooth, 0.01);
+    sscc::TrianglePairRadiusOptions options;
+    const sscc::TrianglePairRadius bound = sscc::triangle_pair_radius(ta, tb, options);
+    const double searched = sscc::test::searched_contact_norm(ta, tb, 10, trial);
+    INFO("trial " << trial << " r " << r << " lower " << bound.lower << " upper " << bound.upper << " searched "
+                  << searched);
+    ++tested;
+    REQUIRE(bound.lower >= 0.0);
+    REQUIRE(bound.lower <= searched * (1.0 + 1e-12));
+    REQUIRE(bound.lower <= bound.upper);
+    REQUIRE(sscc::one_dimensional_radius(ta, tb) <= searched * (1.0 + 1e-12));
+    if (touching) REQUIRE(bound.lower == 0.0);
+    // Refinement stops accurate or exhausted; near-parallel pairs close together (the
+    // second kind) and pairs no motion can close (r < 3) typically exhaust the budget.
+    const bool exhausted = bound.evaluations + 4 > options.max_evaluations || bound.depth >= options.max_depth;
+    if (!touching && !exhausted) {
+      REQUIRE(bound.lower >= (1.0 - options.epsilon) * bound.upper * (1.0 - 1e-12));
+      ++accurate;
+    }
+  }
+  REQUIRE(tested > 200);
+  REQUIRE(accurate > tested / 3);
+}
+
+TEST_CASE("triangle-pair radius: invariant under a common scaling of positions and modes", "[certificates]") {
+  PairMaker m(3);
+  ModalTriangle a, b;
+  a.rest = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
+  b.rest = {Eigen::Vector3d(0.2, 0.2, 0.5), Eigen::Vector3d(1.1, 0.1, 0.6), Eigen::Vector3d(0.1, 1.2, 0.4)};
+  for (int i = 0; i < 3; ++i) {
+    a.modes[i] = Eigen::MatrixXd::NullaryExpr(3, 5, [&] { return m.normal(m.rng); });
+    b.modes[i] = Eigen::MatrixXd::NullaryExpr(3, 5, [&] { return m.normal(m.rng); });
+  }
+  const double reference = sscc::triangle_pair_radius(a, b).lower;
+  REQUIRE(reference > 0.0);
+  for (double scale : {1e-6, 1e-3, 1e3, 1e6}) {
+    ModalTriangle sa = a, sb = b;
+    for (int i = 0; i < 3; ++i) {
+      sa.rest[i] *= scale, sb.rest[i] *= scale;
+      sa.modes[i] *= scale, sb.modes[i] *= scale;
+    }
+    REQUIRE(sscc::triangle_pair_radius(sa, sb).lower == Approx(reference).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("triangle-pair radius: a known contact, and modes that cannot close the gap", "[certificates]") {
+  // b lies 1 above a; mode 0 moves b down by 1 per unit: contact at exactly ||q_hat|| = 1.
+  ModalTriangle a, b;
+  a.rest = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
+  b.rest = {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(0, 1, 1)};
+  for (int i = 0; i < 3; ++i) {
+    a.modes[i] = Eigen::MatrixXd::Zero(3, 2);
+    b.modes[i] = Eigen::MatrixXd::Zero(3, 2);
+    b.modes[i](2, 0) = -1.0;
+    a.modes[i](0, 1) = b.modes[i](0, 1) = 1.0;  // a common sideways translation: no help
+  }
+  const sscc::TrianglePairRadius bound = sscc::triangle_pair_radius(a, b);
+  REQUIRE(bound.lower <= 1.0);
+  REQUIRE(bound.lower >= 0.9);
+  REQUIRE(bound.upper == Approx(1.0));
+  for (int i = 0; i < 3; ++i) b.modes[i](2, 0) = 0.0;  // now nothing moves them apart or together
+  REQUIRE(sscc::triangle_pair_radius(a, b).lower > 1e100);
+}
