@@ -14,6 +14,13 @@ namespace sscc {
 
 namespace {
 
+// A sibling pair's radius is resolved up to this multiple of the smallest radius known in
+// its parent at the time (and R_global), on its own rather than lowered to the parent's
+// minimum: a step a little above the parent's radius is then still certified for most of
+// its sibling pairs. Larger: more precomputation for pairs that rarely matter; 1 gives the
+// paper's running minimum (sibling radii close to the parent's).
+constexpr double kSiblingReach = 2.0;
+
 /// Smallest ||q_hat|| at which the subspace boxes of nodes a and b can meet: along axis D
 /// the centres' gap g_D closes at rate at most ||(C_a - C_b)_D||_2 and the half extents grow
 /// at rate_a,D + rate_b,D per unit ||q_hat|| (Cauchy-Schwarz), and all three axes must close.
@@ -212,47 +219,71 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
   Counters totals;
   std::vector<double> contact(nodes.size(), global);  // per node: smallest contact found
   for (int level = levels - 1; level >= 0; --level) {
-    // A node's radius is the minimum over its children and its sibling pairs; each pair
-    // is handed the smallest radius known so far (R_global at most), so far pairs stop
-    // early. A stored sibling radius is then min(its radius, what it was handed): still a
-    // lower bound, and never below the parent's radius.
-    std::vector<int> level_nodes;
+    // Work items of the level, largest first: each leaf's own pairs, and each sibling pair
+    // of each inner node. A sibling pair is resolved on its own up to kSiblingReach times
+    // the smallest radius among its parent's children (and R_global).
+    struct Task {
+      int node;
+      int a = -1, b = -1;  // -1: a leaf's own pairs
+      int size = 0;
+      RunningMinimum minimum{0.0, 0.0};
+    };
+    std::vector<Task> tasks;
     for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
-      if (depth[n] == level) level_nodes.push_back(n);
+      if (depth[n] != level) continue;
+      const SubspaceBvh::Node& node = nodes[n];
+      if (node.is_leaf()) {
+        tasks.push_back({n, -1, -1, node.triangle_end - node.triangle_begin, {global, global}});
+        continue;
+      }
+      double children = global;
+      for (int a = node.first_child; a < node.first_child + node.child_count; ++a) {
+        children = std::min(children, certificates.node_radius_[a]);
+      }
+      const double reach = std::min(global, kSiblingReach * children);
+      for (int a = node.first_child; a < node.first_child + node.child_count; ++a) {
+        for (int b = a + 1; b < node.first_child + node.child_count; ++b) {
+          const int size = nodes[a].triangle_end - nodes[a].triangle_begin + nodes[b].triangle_end -
+                           nodes[b].triangle_begin;
+          tasks.push_back({n, a, b, size, {reach, reach}});
+        }
+      }
     }
+    std::stable_sort(tasks.begin(), tasks.end(), [](const Task& x, const Task& y) { return x.size > y.size; });
 #pragma omp parallel
     {
       Counters counters;
 #pragma omp for schedule(dynamic, 1)
-      for (long i = 0; i < static_cast<long>(level_nodes.size()); ++i) {
-        const int n = level_nodes[i];
-        const SubspaceBvh::Node& node = nodes[n];
-        RunningMinimum minimum{global, global};
-        if (node.is_leaf()) {
-          precomputation.add_leaf(n, minimum, counters);
-        } else {
-          std::vector<std::pair<double, std::pair<int, int>>> pairs;
-          for (int a = node.first_child; a < node.first_child + node.child_count; ++a) {
-            minimum.add(certificates.node_radius_[a], contact[a]);
-            for (int b = a + 1; b < node.first_child + node.child_count; ++b) {
-              pairs.push_back({box_box_radius(bvh, a, b), {a, b}});
-            }
-          }
-          std::sort(pairs.begin(), pairs.end());
-          for (const auto& [estimate, pair] : pairs) {
-            const auto [a, b] = pair;
-            RunningMinimum pair_minimum = minimum;
-            if (estimate < minimum.lower) precomputation.add_node_pair(a, b, pair_minimum, counters);
-            certificates.sibling_radius_[a][b - node.first_child] = pair_minimum.lower;
-            certificates.sibling_radius_[b][a - node.first_child] = pair_minimum.lower;
-            minimum.add(pair_minimum.lower, pair_minimum.contact);
-          }
+      for (long i = 0; i < static_cast<long>(tasks.size()); ++i) {
+        Task& task = tasks[i];
+        if (task.a < 0) {
+          precomputation.add_leaf(task.node, task.minimum, counters);
+        } else if (box_box_radius(bvh, task.a, task.b) < task.minimum.lower) {
+          precomputation.add_node_pair(task.a, task.b, task.minimum, counters);
         }
-        certificates.node_radius_[n] = minimum.lower;
-        contact[n] = minimum.contact;
       }
 #pragma omp critical
       totals.add(counters);
+    }
+    // A node's radius: the minimum over its children and its sibling pairs.
+    std::vector<RunningMinimum> minimum(nodes.size(), RunningMinimum{global, global});
+    for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+      if (depth[n] != level) continue;
+      for (int a = nodes[n].first_child; a < nodes[n].first_child + nodes[n].child_count; ++a) {
+        minimum[n].add(certificates.node_radius_[a], contact[a]);
+      }
+    }
+    for (const Task& task : tasks) {
+      minimum[task.node].add(task.minimum.lower, task.minimum.contact);
+      if (task.a < 0) continue;
+      const int first = nodes[task.node].first_child;
+      certificates.sibling_radius_[task.a][task.b - first] = task.minimum.lower;
+      certificates.sibling_radius_[task.b][task.a - first] = task.minimum.lower;
+    }
+    for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+      if (depth[n] != level) continue;
+      certificates.node_radius_[n] = minimum[n].lower;
+      contact[n] = minimum[n].contact;
     }
     if (progress) progress(levels - level, levels);
   }

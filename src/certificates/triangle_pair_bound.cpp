@@ -52,10 +52,32 @@ class PairFrame {
       rest_[i] = a.rest[i];
       rest_[3 + i] = b.rest[i];
     }
-    gram_.noalias() = stacked * stacked.transpose();
+    // Coefficient-wise product: for an 18 x r by r x 18 product, packing for a blocked
+    // kernel costs more than it saves.
+    gram_.noalias() = stacked.lazyProduct(stacked.transpose());
     double largest = 0.0;
     for (int i = 0; i < 6; ++i) largest = std::max(largest, gram_.block<3, 3>(3 * i, 3 * i).trace());
     rounding_ = kGramRounding * largest;
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) traces_(i, j) = gram_.block<3, 3>(3 * i, 3 * j).trace();
+    }
+  }
+
+  /// The quadratic forms u^T W_ij u of the block Gram matrix for a unit direction u: then
+  /// ||(sum_i c_i U_i)^T u||^2 = c^T F c.
+  Eigen::Matrix<double, 6, 6> projected(const Eigen::Vector3d& u) const {
+    Eigen::Matrix<double, 6, 6> f;
+    for (int i = 0; i < 6; ++i) {
+      for (int j = i; j < 6; ++j) f(i, j) = f(j, i) = u.dot(gram_.block<3, 3>(3 * i, 3 * j) * u);
+    }
+    return f;
+  }
+
+  /// An upper bound of ||(sum_i c_i U_i)^T u||^2 from the projected forms F of unit u.
+  double projected_norm_squared_upper(const Eigen::Matrix<double, 6, 6>& f, const Weights6& c) const {
+    const double spread = c.cwiseAbs().sum();
+    return std::max(0.0, c.dot(f * c)) + rounding_ * spread * spread +
+           kEigenvaluePad * std::max(0.0, c.dot(traces_ * c)) + std::numeric_limits<double>::min();
   }
 
   /// Gram matrix of the combination sum_i c_i U_i, and the pad covering its rounding.
@@ -80,6 +102,7 @@ class PairFrame {
 
  private:
   Eigen::Matrix<double, 18, 18> gram_;
+  Eigen::Matrix<double, 6, 6> traces_;
   std::array<Eigen::Vector3d, 6> rest_;
   double rounding_ = 0.0;
 };
@@ -96,6 +119,9 @@ struct Evaluation {
   double upper;
 };
 
+/// The rest positions of a piece's three vertices.
+using Corners = std::array<Eigen::Vector3d, 3>;
+
 /// The dual bound: for any v, a contact q_hat of points Xa, Xb satisfies
 ///   v^T (Xa - Xb) = v^T (U(Xb) - U(Xa)) q_hat <= ||(U(Xb) - U(Xa))^T v|| ||q_hat||.
 /// Over the two pieces the ratio N / D, N = v^T (Xa - Xb) linear and D = ||(U(Xb) - U(Xa))^T v||
@@ -106,23 +132,22 @@ struct Evaluation {
 /// d_c, the constant-mode optimum's multiplier, it is never weaker than the paper's
 /// perturbation bound (eq. 10): the numerator is at least R_c^2 and the denominator at most
 /// R_c + |dU| ||v||, with ||v|| <= R_c / sigma_min(A).
-double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, const Eigen::Vector3d& v) {
+double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, const Corners& corners_a,
+                  const Corners& corners_b, const Eigen::Vector3d& v) {
   const double length = v.norm();
   if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
   const Eigen::Vector3d unit = v / length;
+  const Eigen::Matrix<double, 6, 6> forms = frame.projected(unit);
   double bound = INFINITY;
   for (int j = 0; j < 3; ++j) {
     const Weights6 xa = on_first(pa.row(j).transpose());
+    const Eigen::Vector3d& a_point = corners_a[j];
     for (int k = 0; k < 3; ++k) {
       const Weights6 xb = on_second(pb.row(k).transpose());
-      const Eigen::Vector3d pa_point = frame.point(xa), pb_point = frame.point(xb);
-      const double numerator =
-          unit.dot(pa_point - pb_point) - kDistanceAllowance * (pa_point.norm() + pb_point.norm());
+      const Eigen::Vector3d& b_point = corners_b[k];
+      const double numerator = unit.dot(a_point - b_point) - kDistanceAllowance * (a_point.norm() + b_point.norm());
       if (!(numerator > 0.0)) return 0.0;
-      double pad;
-      const Eigen::Matrix3d g = frame.gram(xb - xa, pad);
-      const double denominator = std::sqrt(std::max(0.0, unit.dot(g * unit)) + pad);
-      bound = std::min(bound, numerator / denominator);
+      bound = std::min(bound, numerator / std::sqrt(frame.projected_norm_squared_upper(forms, xb - xa)));
     }
   }
   return bound;
@@ -148,11 +173,14 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   // that map. Only its closest points are used (the bound itself is the dual bound).
   const Eigen::Matrix3d map =
       solver.eigenvectors() * eigenvalues.array().rsqrt().matrix().asDiagonal() * solver.eigenvectors().transpose();
-  const Eigen::Vector3d origin = frame.point(on_first(pa.row(0).transpose()));
-  std::array<Eigen::Vector3d, 3> mapped_a, mapped_b;
+  Corners corners_a, corners_b, mapped_a, mapped_b;
   for (int i = 0; i < 3; ++i) {
-    mapped_a[i] = map * (frame.point(on_first(pa.row(i).transpose())) - origin);
-    mapped_b[i] = map * (frame.point(on_second(pb.row(i).transpose())) - origin);
+    corners_a[i] = frame.point(on_first(pa.row(i).transpose()));
+    corners_b[i] = frame.point(on_second(pb.row(i).transpose()));
+  }
+  for (int i = 0; i < 3; ++i) {
+    mapped_a[i] = map * (corners_a[i] - corners_a[0]);
+    mapped_b[i] = map * (corners_b[i] - corners_a[0]);
   }
   const TriangleClosestPoints closest = closest_points_disjoint_triangles(mapped_a, mapped_b);
   const Weights6 xa = on_first(pa.transpose() * closest.first_weights);
@@ -161,7 +189,7 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   const Eigen::Vector3d constant_mode_multiplier =
       solver.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() * solver.eigenvectors().transpose() * d;
   Evaluation e;
-  e.lower = dual_bound(frame, pa, pb, constant_mode_multiplier);
+  e.lower = dual_bound(frame, pa, pb, corners_a, corners_b, constant_mode_multiplier);
   // The paper's R_hi with the true modes at those points: the least-norm solution of
   // (U(Xb) - U(Xa)) q_hat = d through the eigen-decomposition of its Gram matrix (a
   // component of d in its null space means no solution).
@@ -180,7 +208,7 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   }
   e.upper = std::sqrt(e.upper);
   if (std::isfinite(e.upper)) {
-    e.lower = std::max(e.lower, dual_bound(frame, pa, pb, true_modes.eigenvectors() * inverse_along));
+    e.lower = std::max(e.lower, dual_bound(frame, pa, pb, corners_a, corners_b, true_modes.eigenvectors() * inverse_along));
   }
   return e;
 }
@@ -263,23 +291,33 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
   const double length = axis.norm();
   if (!(length > 0.0)) return 0.0;
   const Eigen::Vector3d n = axis / length;
-  double a_high = -INFINITY, b_low = INFINITY;
-  for (int i = 0; i < 3; ++i) {
-    a_high = std::max(a_high, n.dot(a.rest[i]));
-    b_low = std::min(b_low, n.dot(b.rest[i]));
+  // Per vertex pair (j, k): the gap n^T (X_b,k - X_a,j) and the squared rate
+  // ||n^T (U_b,k - U_a,j)||^2, accumulated column by column.
+  std::array<double, 9> gap, squared{};
+  for (int j = 0; j < 3; ++j) {
+    for (int k = 0; k < 3; ++k) {
+      gap[3 * j + k] = n.dot(b.rest[k] - a.rest[j]);
+      if (!(gap[3 * j + k] > 0.0)) return 0.0;
+    }
   }
-  const double gap = b_low - a_high;
-  if (!(gap > 0.0)) return 0.0;
-  std::array<Eigen::RowVectorXd, 3> along_a, along_b;
-  for (int i = 0; i < 3; ++i) {
-    along_a[i] = n.transpose() * a.modes[i];
-    along_b[i] = n.transpose() * b.modes[i];
+  const Eigen::Index r = a.modes[0].cols();
+  for (Eigen::Index c = 0; c < r; ++c) {
+    std::array<double, 3> along_a, along_b;
+    for (int i = 0; i < 3; ++i) {
+      along_a[i] = n.dot(a.modes[i].col(c));
+      along_b[i] = n.dot(b.modes[i].col(c));
+    }
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) squared[3 * j + k] += (along_b[k] - along_a[j]) * (along_b[k] - along_a[j]);
+    }
   }
-  double rate = 0.0;
-  for (const auto& ua : along_a) {
-    for (const auto& ub : along_b) rate = std::max(rate, (ub - ua).norm());
+  // The ratio is quasi-concave in the barycentric weights (see dual_bound): its minimum
+  // over the two triangles is at a vertex pair.
+  double radius = INFINITY;
+  for (int i = 0; i < 9; ++i) {
+    if (squared[i] > 0.0) radius = std::min(radius, gap[i] / std::sqrt(squared[i]));
   }
-  return rate > 0.0 ? kOneDimensionalShrink * gap / rate : INFINITY;
+  return kOneDimensionalShrink * radius;
 }
 
 }  // namespace sscc

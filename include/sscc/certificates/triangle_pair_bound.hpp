@@ -59,10 +59,11 @@ struct TrianglePairRadius {
 TrianglePairRadius triangle_pair_radius(const ModalTriangle& a, const ModalTriangle& b,
                                         const TrianglePairRadiusOptions& options = {});
 
-/// The 1D bound: project on the line through the triangles' centroids; the gap between
-/// the projected rest intervals closes at rate at most max over vertex pairs of
-/// ||n^T (U_b,k - U_a,j)||_2 per unit ||q_hat||. Cheap; a lower bound; 0 when the
-/// projections overlap.
+/// The 1D bound: project on the line through the triangles' centroids (unit n). Contact
+/// needs n^T (Xb - Xa) to vanish; it starts at the gap and changes at most at the rate
+/// ||n^T (U(Xb) - U(Xa))||_2 per unit ||q_hat|| (Cauchy-Schwarz), and the ratio's minimum
+/// over the triangles is at a vertex pair. Cheap (no eigen-decomposition); a lower bound;
+/// 0 when the projections overlap.
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b);
 
 }  // namespace sscc
