@@ -11,10 +11,12 @@
 #include <functional>
 #include <map>
 #include <random>
+#include <sstream>
 #include <vector>
 
 #include "agreement.hpp"
 #include "fcl_kernels.hpp"
+#include "plot.hpp"
 #include "query_generators.hpp"
 #include "query_set.hpp"
 
@@ -157,8 +159,7 @@ long report_generated(const std::string& label, Kind kind, const std::vector<Que
 }
 
 void write_plots(const std::string& dir, std::ostream& progress) {
-  const std::string script = dir + "/plots.gnuplot";
-  std::ofstream g(script);
+  std::ostringstream g;
   g << "set terminal pngcairo size 1100,450\n"
     << "set output '" << dir << "/kernels_time_vs_error.png'\n"
     << "set datafile separator ','\nset multiplot layout 1,2\n"
@@ -172,12 +173,7 @@ void write_plots(const std::string& dir, std::ostream& progress) {
     << "'' using 1:4 skip 1 with linespoints title 'touching (exact, d = 0)', "
     << "'' using 1:6 skip 1 with linespoints title 'not confirmed by sampling (FP bound)'\n"
     << "unset multiplot\n";
-  g.close();
-  if (std::system(("gnuplot " + script + " 2>/dev/null").c_str()) == 0) {
-    progress << "plot: " << dir << "/kernels_time_vs_error.png\n";
-  } else {
-    progress << "gnuplot not available or failed: CSV files only\n";
-  }
+  render_plot(g.str(), dir + "/plots.gnuplot", dir + "/kernels_time_vs_error.png", progress);
 }
 
 void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Query>& ee,

@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "certificate_sweep.hpp"
 #include "kernel_validation.hpp"
 #include "precompute_command.hpp"
 #include "selfccd_validation.hpp"
@@ -32,6 +33,12 @@ const char* kUsage =
     "            --epsilon E            relative accuracy of the radii (default 0.1)\n"
     "            --global-scale G       radii resolved up to G times the global radius (default 1)\n"
     "            --output FILE.sscc     the certificate file\n"
+    "  certificates  run time against error of the certificates: for each epsilon, precompute,\n"
+    "            then SSCC against the traditional query on one trajectory (CSV and plot)\n"
+    "            --mesh FILE --basis B --weights FILE   the model\n"
+    "            --epsilons LIST        default 0.5,0.2,0.1,0.05,0.02,0.01\n"
+    "            --steps N --amplitude A --burst B --seed S   the trajectory, as for selfccd\n"
+    "            --output DIR           CSV and plot (default validation-output)\n"
     "  selfccd   continuous self-collision over a seeded random trajectory\n"
     "            --mesh FILE            OFF, OBJ or PLY\n"
     "            --basis polynomial:R | FILE.U | FILE   (default polynomial:27)\n"
@@ -145,6 +152,40 @@ int run_precompute(const std::vector<std::string>& args) {
   return run_report(options, flags.quiet, sscc::validation::run_precompute, "precompute");
 }
 
+std::vector<double> number_list(const std::string& flag, const std::string& list) {
+  std::vector<double> numbers;
+  for (const std::string& item : split_list(list)) {
+    try {
+      std::size_t used = 0;
+      const double v = std::stod(item, &used);
+      if (used != item.size() || !(v > 0.0 && v < 1.0)) throw std::invalid_argument(item);
+      numbers.push_back(v);
+    } catch (const std::exception&) {
+      usage_error(flag + " expects numbers in (0, 1), got '" + item + "'");
+    }
+  }
+  return numbers;
+}
+
+int run_certificate_sweep(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args,
+                                  {"--mesh", "--basis", "--weights", "--epsilons", "--steps", "--amplitude",
+                                   "--burst", "--seed", "--output"},
+                                  "certificates");
+  if (!flags.has("--mesh")) usage_error("certificates needs --mesh FILE");
+  sscc::validation::CertificateSweepOptions options;
+  options.model = model_source(flags);
+  if (flags.has("--epsilons")) options.epsilons = number_list("--epsilons", flags.text("--epsilons"));
+  if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
+  if (flags.has("--amplitude")) options.amplitude = flags.number<double>("--amplitude");
+  if (flags.has("--burst")) options.burst = flags.number<double>("--burst");
+  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
+  if (flags.has("--output")) options.output_dir = flags.text("--output");
+  if (options.steps <= 0) usage_error("--steps must be positive");
+  if (options.epsilons.empty()) usage_error("--epsilons needs at least one value");
+  return run_report(options, flags.quiet, sscc::validation::run_certificate_sweep, "certificates");
+}
+
 int run_selfccd(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(
       args,
@@ -174,6 +215,7 @@ int main(int argc, char** argv) {
     if (command == "kernels") return run_kernels(args);
     if (command == "selfccd") return run_selfccd(args);
     if (command == "precompute") return run_precompute(args);
+    if (command == "certificates") return run_certificate_sweep(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;

@@ -1,0 +1,98 @@
+#include "certificate_sweep.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "plot.hpp"
+#include "sscc/query/self_ccd.hpp"
+#include "trajectory.hpp"
+
+namespace sscc::validation {
+
+namespace {
+
+struct TimedRun {
+  std::vector<SelfCcdReport> reports;
+  double total_ms = 0.0;
+  long nodes_visited = 0;
+  int root_certified = 0;
+};
+
+TimedRun run_steps(const SelfCcd& ccd, const std::vector<Eigen::VectorXd>& q, const SelfCcdOptions& options) {
+  TimedRun run;
+  for (std::size_t k = 0; k + 1 < q.size(); ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    run.reports.push_back(ccd.query(q[k], q[k + 1], options));
+    run.total_ms += 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.nodes_visited += run.reports.back().stats.nodes_visited;
+    run.root_certified += run.reports.back().stats.root_certified;
+  }
+  return run;
+}
+
+}  // namespace
+
+long run_certificate_sweep(const CertificateSweepOptions& o, std::ostream& out, std::ostream& progress) {
+  const SubspaceModel model = load_model(o.model, progress);
+  const SubspaceBvh bvh(model);
+  const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed, o.burst);
+  SelfCcdOptions traditional_options;
+  traditional_options.use_certificates = false;
+  progress << "traditional: " << o.steps << " steps\n";
+  const TimedRun traditional = run_steps(SelfCcd(bvh), q, traditional_options);
+  std::filesystem::create_directories(o.output_dir);
+  const std::string csv_path = o.output_dir + "/certificates_epsilon.csv";
+  std::ofstream csv(csv_path);
+  csv << "epsilon,precompute_s,root_radius,certified_steps,culled_node_visits,sscc_mean_ms,traditional_mean_ms,"
+         "speedup\n";
+  long problems = 0;
+  for (double epsilon : o.epsilons) {
+    CertificateParameters parameters;
+    parameters.epsilon = epsilon;
+    progress << "epsilon " << epsilon << ": precomputing\n" << std::flush;
+    const Certificates certificates = Certificates::precompute(bvh, parameters);
+    const SelfCcd ccd(bvh, certificates);
+    const TimedRun sscc = run_steps(ccd, q, {});
+    int identical = 0;
+    for (int k = 0; k < o.steps; ++k) {
+      identical += sscc.reports[k].pairs == traditional.reports[k].pairs &&
+                   sscc.reports[k].features == traditional.reports[k].features;
+    }
+    problems += o.steps - identical;
+    const double culled = 1.0 - static_cast<double>(sscc.nodes_visited) / std::max(1L, traditional.nodes_visited);
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "certificates epsilon=%g: precompute_s=%.3f root_radius=%.6g certified_steps=%d/%d "
+                  "culled_node_visits=%.4f sscc_mean_ms=%.4f traditional_mean_ms=%.4f speedup=%.2f "
+                  "identical_steps=%d/%d",
+                  epsilon, certificates.stats().seconds, certificates.node_radius(0), sscc.root_certified, o.steps,
+                  culled, sscc.total_ms / o.steps, traditional.total_ms / o.steps, traditional.total_ms / sscc.total_ms,
+                  identical, o.steps);
+    out << line << '\n';
+    csv << epsilon << ',' << certificates.stats().seconds << ',' << certificates.node_radius(0) << ','
+        << sscc.root_certified << ',' << culled << ',' << sscc.total_ms / o.steps << ','
+        << traditional.total_ms / o.steps << ',' << traditional.total_ms / sscc.total_ms << '\n';
+  }
+  csv.close();
+  progress << "csv: " << csv_path << '\n';
+  std::ostringstream g;
+  const std::string png = o.output_dir + "/certificates_epsilon.png";
+  g << "set terminal pngcairo size 1100,450\nset output '" << png << "'\n"
+    << "set datafile separator ','\nset multiplot layout 1,2\nset logscale x\nset xlabel 'epsilon'\n"
+    << "set key top right\nset title 'Precomputation against accuracy'\nset ylabel 'seconds'\n"
+    << "set y2label 'root radius'\nset y2tics\n"
+    << "plot '" << csv_path << "' using 1:2 skip 1 with linespoints title 'precompute time', "
+    << "'' using 1:3 skip 1 axes x1y2 with linespoints title 'root radius'\n"
+    << "unset y2label\nunset y2tics\n"
+    << "set title 'Query: speedup over the traditional query'\nset ylabel 'speedup'\n"
+    << "plot '" << csv_path << "' using 1:8 skip 1 with linespoints title 'speedup (mean time)', "
+    << "'' using 1:($5*100) skip 1 with linespoints title 'node visits culled (%)'\n"
+    << "unset multiplot\n";
+  render_plot(g.str(), o.output_dir + "/certificates_epsilon.gnuplot", png, progress);
+  return problems;
+}
+
+}  // namespace sscc::validation
