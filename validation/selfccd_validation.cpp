@@ -58,6 +58,7 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   traditional.use_certificates = false;
   const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed, o.burst);
   std::map<std::string, MethodRun> runs;
+  long problems = 0;
   for (const std::string& method : o.methods) {
     progress << "method " << method << ": " << o.steps << " steps\n";
     MethodRun& run = runs[method];
@@ -93,6 +94,25 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
     }
     out << '\n';
   }
+  if (runs.count("sscc")) {
+    // The cost of a step the root certificate decides, timed over many repeats of one.
+    const std::vector<SelfCcdReport>& reports = runs["sscc"].reports;
+    const auto certified = std::find_if(reports.begin(), reports.end(),
+                                        [](const SelfCcdReport& r) { return r.stats.root_certified; });
+    if (certified != reports.end()) {
+      const std::size_t k = static_cast<std::size_t>(certified - reports.begin());
+      constexpr int kRepeats = 100000;
+      long collided = 0;
+      const auto start = std::chrono::steady_clock::now();
+      for (int i = 0; i < kRepeats; ++i) collided += ccd.query(q[k], q[k + 1]).collided();
+      const double us = 1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kRepeats;
+      char line[160];
+      std::snprintf(line, sizeof line, "sscc certified step: mean_us=%.3f (one root-certified step, %d repeats)", us,
+                    kRepeats);
+      out << line << '\n';
+      if (collided != 0) ++problems;
+    }
+  }
   if (runs.count("sscc") && runs.count("traditional")) {
     const MethodRun& fast = runs["sscc"];
     const MethodRun& slow = runs["traditional"];
@@ -108,7 +128,6 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
                   slow_total / fast_total, median(ratios));
     out << line << '\n';
   }
-  long problems = 0;
   for (std::size_t i = 0; i < o.methods.size(); ++i) {
     for (std::size_t j = i + 1; j < o.methods.size(); ++j) {
       const MethodRun& a = runs[o.methods[i]];

@@ -15,8 +15,9 @@ std::vector<Eigen::VectorXd> random_trajectory(const SubspaceModel& model, int s
   const double innovation = std::sqrt(1.0 - kTrajectoryCorrelation * kTrajectoryCorrelation);
   const Eigen::VectorXd unscale = model.weights().cwiseSqrt().cwiseInverse();
   const auto envelope = [&](int k) {
-    const double pulse = std::max(0.0, std::sin(2.0 * M_PI * k / kBurstPeriod));
-    return 1.0 + (burst - 1.0) * pulse * pulse * pulse * pulse;
+    const double from_peak = std::fabs(k % kBurstPeriod - 0.5 * kBurstPeriod) / (0.5 * kBurstWidth);
+    const double pulse = from_peak < 1.0 ? 0.5 * (1.0 + std::cos(M_PI * from_peak)) : 0.0;
+    return 1.0 + (burst - 1.0) * pulse;
   };
   std::vector<Eigen::VectorXd> q;
   Eigen::VectorXd q_hat(r);

@@ -7,8 +7,8 @@
 // `amplitude` and each step moves by about 0.44 amplitude. Step k goes from q_k to q_{k+1}.
 //
 // With burst > 1 the walk is scaled by an envelope that rises smoothly from 1 to `burst`
-// once every kBurstPeriod steps, 1 + (burst - 1) max(0, sin(2 pi k / period))^4: most
-// steps are modest, and about a fifth are large excursions (where contacts happen).
+// and back (a raised cosine kBurstWidth steps wide) once every kBurstPeriod steps: most
+// steps are modest, and a tenth are excursions, where contacts happen.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,7 +21,8 @@
 namespace sscc::validation {
 
 inline constexpr double kTrajectoryCorrelation = 0.9;
-inline constexpr int kBurstPeriod = 50;
+inline constexpr int kBurstPeriod = 100;
+inline constexpr int kBurstWidth = 10;
 
 /// steps + 1 configurations (reduced coordinates q, not scaled).
 std::vector<Eigen::VectorXd> random_trajectory(const SubspaceModel& model, int steps, double amplitude,

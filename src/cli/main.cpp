@@ -44,7 +44,8 @@ const char* kUsage =
     "            --basis polynomial:R | FILE.U | FILE   (default polynomial:27)\n"
     "            --weights FILE         weights of the modes (default all 1)\n"
     "            --steps N --amplitude A --seed S   trajectory: ||q||_M stays near A\n"
-    "            --burst B              every 50 steps the amplitude swells to B times A\n"
+    "            --burst B              every 100 steps the amplitude swells to B times A\n"
+    "                                   and back over 10 steps\n"
     "            --certificates FILE    certificate file from precompute (method sscc)\n"
     "            --methods LIST         comma-separated: sscc, traditional, exhaustive, fcl\n"
     "  help      this text\n";
