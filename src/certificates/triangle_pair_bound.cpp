@@ -27,11 +27,15 @@ constexpr double kGramRounding = 256.0 * std::numeric_limits<double>::epsilon();
 // Smallest eigenvalue of the constant-mode Gram matrix used in its map, relative to the
 // largest. Only conditions the choice of multiplier: not a soundness matter.
 constexpr double kMapConditioning = 1e-12;
-// Allowance, relative to the distance of the points from the origin, subtracted from the
-// dual bound's numerator v^T (Xa - Xb) (v of unit length): covers its rounding. Units: length.
-constexpr double kDistanceAllowance = 1e-9;
-// The 1D bound is only a culling estimate; shrinking it by this factor keeps its rounding
-// from culling a pair whose radius lies just below the current minimum.
+// Allowance, relative to the extent of the pair (its rest positions are taken relative to
+// its first vertex), subtracted from the dual bound's numerator v^T (Xa - Xb) (v of unit
+// length): covers the rounding of that translation, of the pieces' corners and of the dot
+// product, a few units of roundoff each. Units: length. Larger only weakens pairs closer
+// than this fraction of their size.
+constexpr double kDistanceAllowance = 1e-12;
+// Relative shrink of the 1D bound covering the rounding of its sums over r columns, the
+// square root and the division (the absolute errors of the gaps and rates are padded where
+// they arise). Covers r up to about 10^6 modes.
 constexpr double kOneDimensionalShrink = 1.0 - 1e-9;
 
 /// The two triangles of a pair, reduced to what the bounds need: the six rest vertices and
@@ -49,8 +53,8 @@ class PairFrame {
     for (int i = 0; i < 3; ++i) {
       stacked.middleRows<3>(3 * i) = a.modes[i] - mean;
       stacked.middleRows<3>(9 + 3 * i) = b.modes[i] - mean;
-      rest_[i] = a.rest[i];
-      rest_[3 + i] = b.rest[i];
+      rest_[i] = a.rest[i] - a.rest[0];
+      rest_[3 + i] = b.rest[i] - a.rest[0];
     }
     // Coefficient-wise product: for an 18 x r by r x 18 product, packing for a blocked
     // kernel costs more than it saves.
@@ -58,6 +62,7 @@ class PairFrame {
     double largest = 0.0;
     for (int i = 0; i < 6; ++i) largest = std::max(largest, gram_.block<3, 3>(3 * i, 3 * i).trace());
     rounding_ = kGramRounding * largest;
+    for (const Eigen::Vector3d& p : rest_) extent_ = std::max(extent_, p.cwiseAbs().maxCoeff());
     for (int i = 0; i < 6; ++i) {
       for (int j = 0; j < 6; ++j) traces_(i, j) = gram_.block<3, 3>(3 * i, 3 * j).trace();
     }
@@ -94,6 +99,9 @@ class PairFrame {
     return g;
   }
 
+  /// Largest rest coordinate, relative to the first vertex of the first triangle.
+  double extent() const { return extent_; }
+
   Eigen::Vector3d point(const Weights6& w) const {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (int i = 0; i < 6; ++i) p += w[i] * rest_[i];
@@ -105,6 +113,7 @@ class PairFrame {
   Eigen::Matrix<double, 6, 6> traces_;
   std::array<Eigen::Vector3d, 6> rest_;
   double rounding_ = 0.0;
+  double extent_ = 0.0;
 };
 
 /// A piece of one triangle: row k holds the barycentric weights of the piece's vertex k.
@@ -134,7 +143,7 @@ using Corners = std::array<Eigen::Vector3d, 3>;
 /// R_c + |dU| ||v||, with ||v|| <= R_c / sigma_min(A).
 double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, const Corners& corners_a,
                   const Corners& corners_b, const Eigen::Vector3d& v) {
-  const double length = v.norm();
+  const double length = v.stableNorm();
   if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
   const Eigen::Vector3d unit = v / length;
   const Eigen::Matrix<double, 6, 6> forms = frame.projected(unit);
@@ -145,7 +154,7 @@ double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, cons
     for (int k = 0; k < 3; ++k) {
       const Weights6 xb = on_second(pb.row(k).transpose());
       const Eigen::Vector3d& b_point = corners_b[k];
-      const double numerator = unit.dot(a_point - b_point) - kDistanceAllowance * (a_point.norm() + b_point.norm());
+      const double numerator = unit.dot(a_point - b_point) - kDistanceAllowance * frame.extent();
       if (!(numerator > 0.0)) return 0.0;
       bound = std::min(bound, numerator / std::sqrt(frame.projected_norm_squared_upper(forms, xb - xa)));
     }
@@ -288,31 +297,41 @@ TrianglePairRadius triangle_pair_radius(const ModalTriangle& a, const ModalTrian
 
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
   const Eigen::Vector3d axis = (b.rest[0] + b.rest[1] + b.rest[2]) - (a.rest[0] + a.rest[1] + a.rest[2]);
-  const double length = axis.norm();
+  const double length = axis.stableNorm();
   if (!(length > 0.0)) return 0.0;
   const Eigen::Vector3d n = axis / length;
-  // Per vertex pair (j, k): the gap n^T (X_b,k - X_a,j) and the squared rate
-  // ||n^T (U_b,k - U_a,j)||^2, accumulated column by column.
+  constexpr double u = std::numeric_limits<double>::epsilon();
+  // Per vertex pair (j, k): a lower bound of the gap n^T (X_b,k - X_a,j), the computed dot
+  // product less its absolute rounding (the difference and the three products).
   std::array<double, 9> gap, squared{};
   for (int j = 0; j < 3; ++j) {
     for (int k = 0; k < 3; ++k) {
-      gap[3 * j + k] = n.dot(b.rest[k] - a.rest[j]);
+      const Eigen::Vector3d d = b.rest[k] - a.rest[j];
+      gap[3 * j + k] = n.dot(d) - 8.0 * u * n.cwiseAbs().dot(d.cwiseAbs());
       if (!(gap[3 * j + k] > 0.0)) return 0.0;
     }
   }
+  // And an upper bound of the squared rate ||n^T (U_b,k - U_a,j)||^2, column by column: each
+  // projected difference grown by the rounding of the two projections it subtracts.
   const Eigen::Index r = a.modes[0].cols();
   for (Eigen::Index c = 0; c < r; ++c) {
-    std::array<double, 3> along_a, along_b;
+    std::array<double, 3> along_a, along_b, slack_a, slack_b;
     for (int i = 0; i < 3; ++i) {
       along_a[i] = n.dot(a.modes[i].col(c));
       along_b[i] = n.dot(b.modes[i].col(c));
+      slack_a[i] = 4.0 * u * n.cwiseAbs().dot(a.modes[i].col(c).cwiseAbs());
+      slack_b[i] = 4.0 * u * n.cwiseAbs().dot(b.modes[i].col(c).cwiseAbs());
     }
     for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) squared[3 * j + k] += (along_b[k] - along_a[j]) * (along_b[k] - along_a[j]);
+      for (int k = 0; k < 3; ++k) {
+        const double difference = std::fabs(along_b[k] - along_a[j]) * (1.0 + u) + slack_a[j] + slack_b[k];
+        squared[3 * j + k] += difference * difference;
+      }
     }
   }
   // The ratio is quasi-concave in the barycentric weights (see dual_bound): its minimum
-  // over the two triangles is at a vertex pair.
+  // over the two triangles is at a vertex pair. The last factor covers the rounding of the
+  // sums, the square root and the division.
   double radius = INFINITY;
   for (int i = 0; i < 9; ++i) {
     if (squared[i] > 0.0) radius = std::min(radius, gap[i] / std::sqrt(squared[i]));

@@ -143,3 +143,29 @@ TEST_CASE("triangle-pair radius: a known contact, and modes that cannot close th
   for (int i = 0; i < 3; ++i) b.modes[i](2, 0) = 0.0;  // now nothing moves them apart or together
   REQUIRE(sscc::triangle_pair_radius(a, b).lower > 1e100);
 }
+
+TEST_CASE("1D bound: its rounding never lifts it above the true radius (parallel faces, far from the origin)",
+          "[certificates]") {
+  // b lies at height h above a along (1, 1, 0) / sqrt 2 and moves towards it at unit rate
+  // per unit q_hat (mode (-s, -s, 0), s = fl(sqrt 0.5)): the radius is h / s exactly in real
+  // arithmetic, while the triangles span thousands of units sideways.
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<long long> coordinate(-1000, 1000);
+  const double s = std::sqrt(0.5);
+  for (int bits : {10, 20, 30}) {
+    const double h = std::ldexp(1.0, -bits);
+    const long double truth = static_cast<long double>(h) / static_cast<long double>(s);
+    for (int trial = 0; trial < 4000; ++trial) {
+      ModalTriangle a, b;
+      for (int i = 0; i < 3; ++i) {
+        const double x = 4.0 * coordinate(rng), z = 4.0 * coordinate(rng);
+        a.rest[i] = Eigen::Vector3d(x + 64.0, -x - 64.0, z);
+        a.modes[i] = Eigen::MatrixXd::Zero(3, 1);
+        b.modes[i] = -Eigen::Vector3d(s, s, 0.0);
+      }
+      for (int i = 0; i < 3; ++i) b.rest[i] = (a.rest[0] + a.rest[1] + a.rest[2] + a.rest[i]) / 4.0 + Eigen::Vector3d(h, h, 0);
+      INFO("bits " << bits << " trial " << trial);
+      REQUIRE(static_cast<long double>(sscc::one_dimensional_radius(a, b)) <= truth);
+    }
+  }
+}
