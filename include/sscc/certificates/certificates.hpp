@@ -10,6 +10,9 @@
 // p + U q): built from the conservative triangle-pair bounds of triangle_pair_bound.hpp, the
 // box-box and 1D bounds in Cauchy-Schwarz form, and clamps that only lower values (the
 // global radius R_global, and a computation stopped early keeps the minimum it was handed).
+// The query compares these radii with norms computed in floating point and then tests
+// positions computed in floating point: a contact that exists only through the rounding of
+// those positions (a few units of roundoff of the coordinates) is outside the guarantee.
 // Radii are not tight: a pair's radius is resolved to within the relative accuracy epsilon
 // where it matters, and every radius is capped at R_global.
 //
