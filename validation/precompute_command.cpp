@@ -41,6 +41,10 @@ long run_precompute(const PrecomputeCommandOptions& o, std::ostream& out, std::o
            << s.node_pairs_culled << "), triangle pairs bounded " << s.triangle_pairs_bounded << " (culled by 1D "
            << s.triangle_pairs_culled << "), constant-mode evaluations " << s.constant_mode_evaluations
            << ", global radius " << certificates.global_radius() << '\n';
+  if (certificates.node_radius(0) == 0.0) {
+    progress << "precompute: warning: root radius 0: non-adjacent triangles touch or intersect at rest (or no "
+                "motion is needed to bring them together); the root certifies nothing\n";
+  }
   print_radius_per_level(bvh, certificates, out);
   char line[256];
   std::snprintf(line, sizeof line, "precompute: triangles=%d nodes=%d r=%d time_s=%.3f root_radius=%.6g",
