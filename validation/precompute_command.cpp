@@ -7,17 +7,9 @@
 namespace sscc::validation {
 
 void print_radius_per_level(const SubspaceBvh& bvh, const Certificates& certificates, std::ostream& out) {
-  const auto& nodes = bvh.nodes();
-  std::vector<int> depth(nodes.size(), 0);
-  std::vector<std::vector<double>> radii(1);
-  radii[0].push_back(certificates.node_radius(0));
-  for (std::size_t n = 0; n < nodes.size(); ++n) {
-    for (int c = nodes[n].first_child; c < nodes[n].first_child + nodes[n].child_count; ++c) {
-      depth[c] = depth[n] + 1;
-      if (static_cast<int>(radii.size()) <= depth[c]) radii.resize(depth[c] + 1);
-      radii[depth[c]].push_back(certificates.node_radius(c));
-    }
-  }
+  const std::vector<int> depth = bvh.node_depths();
+  std::vector<std::vector<double>> radii(*std::max_element(depth.begin(), depth.end()) + 1);
+  for (int n = 0; n < certificates.node_count(); ++n) radii[depth[n]].push_back(certificates.node_radius(n));
   for (std::size_t level = 0; level < radii.size(); ++level) {
     std::vector<double>& r = radii[level];
     std::sort(r.begin(), r.end());

@@ -169,6 +169,14 @@ void SubspaceBvh::compute_bounds(int n) {
   }
 }
 
+std::vector<int> SubspaceBvh::node_depths() const {
+  std::vector<int> depth(nodes_.size(), 0);
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {  // children come after their parent
+    for (int c = nodes_[n].first_child; c < nodes_[n].first_child + nodes_[n].child_count; ++c) depth[c] = depth[n] + 1;
+  }
+  return depth;
+}
+
 SubspaceBvh::SubspaceBound SubspaceBvh::subspace_bound(int n) const {
   const int r = model_.mode_count();
   return {centre_[n], half_[n], rate_[n], {&mean_modes_[static_cast<std::size_t>(n) * 3 * r], 3, r}};

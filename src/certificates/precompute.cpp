@@ -1,7 +1,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -208,14 +207,8 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
   const auto& nodes = bvh.nodes();
 
   // Levels, deepest first: a node's radius needs its children's.
-  std::vector<int> depth(nodes.size(), 0);
-  int levels = 1;
-  for (std::size_t n = 0; n < nodes.size(); ++n) {
-    for (int c = nodes[n].first_child; c < nodes[n].first_child + nodes[n].child_count; ++c) {
-      depth[c] = depth[n] + 1;
-      levels = std::max(levels, depth[c] + 1);
-    }
-  }
+  const std::vector<int> depth = bvh.node_depths();
+  const int levels = *std::max_element(depth.begin(), depth.end()) + 1;
   Counters totals;
   std::vector<double> contact(nodes.size(), global);  // per node: smallest contact found
   for (int level = levels - 1; level >= 0; --level) {

@@ -38,11 +38,12 @@ Aabb box_at(const std::vector<Eigen::Vector3d>& x, const Triangle& t) {
 }
 
 /// Node boxes computed on first use (each at most once per query).
+template <typename Box>
 class LazyBoxes {
  public:
   explicit LazyBoxes(std::size_t nodes) : boxes_(nodes), known_(nodes, 0) {}
   template <typename Compute>
-  const Aabb& get(int n, Compute compute) {
+  const Box& get(int n, Compute compute) {
     if (!known_[n]) {
       boxes_[n] = compute(n);
       known_[n] = 1;
@@ -51,7 +52,7 @@ class LazyBoxes {
   }
 
  private:
-  std::vector<Aabb> boxes_;
+  std::vector<Box> boxes_;
   std::vector<char> known_;
 };
 
@@ -87,8 +88,7 @@ class StepContext {
         x1_(mesh_.vertex_count()),
         computed_(mesh_.vertex_count(), 0),
         subspace_boxes_(bvh.nodes().size()),
-        end_boxes_(bvh.nodes().size()),
-        end_boxes_known_(bvh.nodes().size(), 0) {}
+        end_boxes_(bvh.nodes().size()) {}
 
   /// Whether two nodes may hold touching triangles. With refitted boxes the test is also
   /// made in the nodes' common moving frame: their mean displacement taken out of both
@@ -152,21 +152,21 @@ class StepContext {
   /// A node's boxes at both ends, refitted from its children's (or its triangles') on
   /// first use: only the nodes the traversal reaches, and the vertices under them.
   const EndBoxes& node_end_boxes(int n) {
-    if (end_boxes_known_[n]) return end_boxes_[n];
-    const SubspaceBvh::Node& node = bvh_.nodes()[n];
-    const Aabb empty{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
-    EndBoxes box{empty, empty};
-    const auto add = [&](const EndBoxes& part) {
-      box[0] = hull(box[0], part[0]);
-      box[1] = hull(box[1], part[1]);
-    };
-    if (node.is_leaf()) {
-      for (int i = node.triangle_begin; i < node.triangle_end; ++i) add(triangle_end_boxes(bvh_.triangle_order()[i]));
-    } else {
-      for (int c = node.first_child; c < node.first_child + node.child_count; ++c) add(node_end_boxes(c));
-    }
-    end_boxes_known_[n] = 1;
-    return end_boxes_[n] = box;
+    return end_boxes_.get(n, [&](int m) {
+      const SubspaceBvh::Node& node = bvh_.nodes()[m];
+      const Aabb empty{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
+      EndBoxes box{empty, empty};
+      const auto add = [&](const EndBoxes& part) {
+        box[0] = hull(box[0], part[0]);
+        box[1] = hull(box[1], part[1]);
+      };
+      if (node.is_leaf()) {
+        for (int i = node.triangle_begin; i < node.triangle_end; ++i) add(triangle_end_boxes(bvh_.triangle_order()[i]));
+      } else {
+        for (int c = node.first_child; c < node.first_child + node.child_count; ++c) add(node_end_boxes(c));
+      }
+      return box;
+    });
   }
 
   void ensure_vertex(int v) {
@@ -274,9 +274,8 @@ class StepContext {
   double s_;
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
-  LazyBoxes subspace_boxes_;
-  std::vector<EndBoxes> end_boxes_;  // per node, valid where known
-  std::vector<char> end_boxes_known_;
+  LazyBoxes<Aabb> subspace_boxes_;
+  LazyBoxes<EndBoxes> end_boxes_;
   std::vector<FeatureContact> feature_hits_;
   SelfCcdStats stats_;
   bool stop_ = false;
@@ -399,7 +398,7 @@ class DiscreteContext {
   std::vector<Eigen::Vector3d> x_;
   std::vector<char> computed_;
   std::vector<TrianglePairContact> pairs_;
-  LazyBoxes boxes_;
+  LazyBoxes<Aabb> boxes_;
   SelfCcdStats stats_;
   bool stop_ = false;
 };

@@ -66,6 +66,8 @@ class SubspaceBvh {
   /// Triangle indices, grouped so that each node's triangles are contiguous.
   const std::vector<int>& triangle_order() const { return order_; }
   const BvhBuildStats& build_stats() const { return stats_; }
+  /// Each node's depth (the root's is 0).
+  std::vector<int> node_depths() const;
 
   /// Node n's bound: in every configuration q_hat its vertices lie in the box
   /// centre + mean_modes q_hat +- (half + rate ||q_hat||).
