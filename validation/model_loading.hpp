@@ -1,5 +1,7 @@
 // Loads the subspace model the validation commands work on: a mesh file and a basis
-// ("polynomial:R" or a basis file), with optional weights (default all ones).
+// ("polynomial:R", "modal:R" for modal analysis with the default material and volume, or
+// a basis file), with optional weights (default: modal weights for "modal:R", else all
+// ones; a weights file overrides both).
 #pragma once
 
 #include <ostream>
@@ -11,7 +13,7 @@ namespace sscc::validation {
 
 struct ModelSource {
   std::string mesh;
-  std::string basis = "polynomial:27";  ///< "polynomial:R" or a basis file (.U or text)
+  std::string basis = "polynomial:27";  ///< "polynomial:R", "modal:R" or a basis file (.U or text)
   std::string weights;                  ///< weights file; "" means all ones
 };
 

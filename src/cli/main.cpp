@@ -1,4 +1,5 @@
 // The sscc command-line tool: a thin shell over the library and its validation programs.
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -10,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "basis_command.hpp"
 #include "certificate_sweep.hpp"
 #include "kernel_validation.hpp"
 #include "precompute_command.hpp"
@@ -39,6 +41,26 @@ const char* kUsage =
     "            --epsilons LIST        default 0.5,0.2,0.1,0.05,0.02,0.01\n"
     "            --steps N --amplitude A --burst B --seed S   the trajectory, as for selfccd\n"
     "            --output DIR           CSV and plot (default validation-output)\n"
+    "  basis     a subspace basis for a mesh, written as a Vega .U file and its weights\n"
+    "            --mesh FILE            OFF, OBJ or PLY\n"
+    "            --method M             modal (linear modal analysis, weights omega^2/2),\n"
+    "                                   polynomial (the 27 linear and quadratic modes), or\n"
+    "                                   stiffness (stiffness-scale the basis given by --input)\n"
+    "            --modes R              modes wanted (default 30; polynomial: at most 27)\n"
+    "            --scaling S            polynomial: stiffness (diagonalised against the reduced\n"
+    "                                   stiffness, filtered weights; default) or displacement\n"
+    "                                   (largest vertex displacement = box diagonal, weights 1)\n"
+    "            --input FILE.U         stiffness: the basis to scale\n"
+    "            --youngs E --poisson NU --density RHO   material (Pa, -, kg/m^3; default\n"
+    "                                   1e6, 0.4, 1100), mesh units are metres\n"
+    "            --volume V             auto (TetGen for closed surfaces, else voxels), tetgen,\n"
+    "                                   voxel (default auto)\n"
+    "            --voxel-resolution N   cells along the longest side (default 40)\n"
+    "            --tetgen-max-volume X  largest tetrahedron (mesh units cubed; default none)\n"
+    "            --filter-ratio L       weight filter lambda -> (1/lambda + 1/(L lambda_min))^-1\n"
+    "                                   (default 100)\n"
+    "            --output FILE.U        the basis; weights go to FILE.weights unless\n"
+    "            --weights-output FILE  says otherwise\n"
     "  selfccd   continuous self-collision over a seeded random trajectory\n"
     "            --mesh FILE            OFF, OBJ or PLY\n"
     "            --basis polynomial:R | FILE.U | FILE   (default polynomial:27)\n"
@@ -62,6 +84,19 @@ struct Flags {
 
   bool has(const std::string& flag) const { return values.count(flag) != 0; }
   const std::string& text(const std::string& flag) const { return values.at(flag); }
+
+  /// Any finite number.
+  double real(const std::string& flag) const {
+    const std::string& value = text(flag);
+    try {
+      std::size_t used = 0;
+      const double v = std::stod(value, &used);
+      if (used != value.size() || !std::isfinite(v)) throw std::invalid_argument(value);
+      return v;
+    } catch (const std::exception&) {
+      usage_error(flag + " expects a number, got '" + value + "'");
+    }
+  }
 
   /// A non-negative number: an integer when Number is integral.
   template <typename Number>
@@ -187,6 +222,43 @@ int run_certificate_sweep(const std::vector<std::string>& args) {
   return run_report(options, flags.quiet, sscc::validation::run_certificate_sweep, "certificates");
 }
 
+int run_basis(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args,
+                                  {"--mesh", "--method", "--modes", "--scaling", "--input", "--youngs", "--poisson",
+                                   "--density", "--volume", "--voxel-resolution", "--tetgen-max-volume",
+                                   "--filter-ratio", "--output", "--weights-output"},
+                                  "basis");
+  if (!flags.has("--mesh")) usage_error("basis needs --mesh FILE");
+  if (!flags.has("--output")) usage_error("basis needs --output FILE.U");
+  sscc::validation::BasisCommandOptions options;
+  options.mesh = flags.text("--mesh");
+  options.output = flags.text("--output");
+  if (flags.has("--weights-output")) options.weights_output = flags.text("--weights-output");
+  if (flags.has("--method")) options.method = flags.text("--method");
+  if (flags.has("--modes")) options.elastic.modes = flags.number<int>("--modes");
+  if (flags.has("--scaling")) {
+    const std::string& scaling = flags.text("--scaling");
+    if (scaling == "stiffness") {
+      options.scaling = sscc::validation::PolynomialScaling::kStiffness;
+    } else if (scaling == "displacement") {
+      options.scaling = sscc::validation::PolynomialScaling::kDisplacement;
+    } else {
+      usage_error("--scaling expects stiffness or displacement, got '" + scaling + "'");
+    }
+  }
+  if (flags.has("--input")) options.input_basis = flags.text("--input");
+  if (flags.has("--youngs")) options.elastic.material.youngs_modulus = flags.real("--youngs");
+  if (flags.has("--poisson")) options.elastic.material.poisson_ratio = flags.real("--poisson");
+  if (flags.has("--density")) options.elastic.material.density = flags.real("--density");
+  if (flags.has("--volume")) options.elastic.volume.method = sscc::parse_volume_method(flags.text("--volume"));
+  if (flags.has("--voxel-resolution")) options.elastic.volume.voxel_resolution = flags.number<int>("--voxel-resolution");
+  if (flags.has("--tetgen-max-volume")) {
+    options.elastic.volume.tetgen_max_volume = flags.number<double>("--tetgen-max-volume");
+  }
+  if (flags.has("--filter-ratio")) options.elastic.weight_filter_ratio = flags.number<double>("--filter-ratio");
+  return run_report(options, flags.quiet, sscc::validation::run_basis, "basis");
+}
+
 int run_selfccd(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(
       args,
@@ -217,6 +289,7 @@ int main(int argc, char** argv) {
     if (command == "selfccd") return run_selfccd(args);
     if (command == "precompute") return run_precompute(args);
     if (command == "certificates") return run_certificate_sweep(args);
+    if (command == "basis") return run_basis(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;

@@ -1,6 +1,7 @@
 // Small meshes generated for tests.
 #pragma once
 
+#include <array>
 #include <cmath>
 
 #include "sscc/mesh/triangle_mesh.hpp"
@@ -52,6 +53,51 @@ inline TriangleMesh parallel_sheets(int n, double gap) {
       for (int j = 0; j < n; ++j) {
         t.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
         t.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+  return TriangleMesh(std::move(v), std::move(t));
+}
+
+}  // namespace sscc::test
+
+namespace sscc::test {
+
+/// The closed surface of the box [0, size_x] x [0, size_y] x [0, size_z], outward
+/// oriented, each face an even grid of cells[axis] divisions, split in two triangles.
+inline TriangleMesh box_surface(const Eigen::Vector3d& size, const std::array<int, 3>& cells) {
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Triangle> t;
+  std::vector<int> index((cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1), -1);
+  const auto vertex = [&](const std::array<int, 3>& g) {
+    int& id = index[g[0] + (cells[0] + 1) * (g[1] + (cells[1] + 1) * g[2])];
+    if (id < 0) {
+      id = static_cast<int>(v.size());
+      v.emplace_back(size[0] * g[0] / cells[0], size[1] * g[1] / cells[1], size[2] * g[2] / cells[2]);
+    }
+    return id;
+  };
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    for (int side = 0; side < 2; ++side) {
+      for (int i = 0; i < cells[b]; ++i) {
+        for (int j = 0; j < cells[c]; ++j) {
+          const auto at = [&](int di, int dj) {
+            std::array<int, 3> g{};
+            g[a] = side ? cells[a] : 0;
+            g[b] = i + di;
+            g[c] = j + dj;
+            return vertex(g);
+          };
+          const int p00 = at(0, 0), p10 = at(1, 0), p11 = at(1, 1), p01 = at(0, 1);
+          if (side) {
+            t.push_back({p00, p10, p11});
+            t.push_back({p00, p11, p01});
+          } else {
+            t.push_back({p00, p11, p10});
+            t.push_back({p00, p01, p11});
+          }
+        }
       }
     }
   }

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 #include "sscc/mesh/triangle_mesh.hpp"
 
 namespace sscc {
@@ -17,5 +19,11 @@ inline constexpr int kMaxPolynomialModes = 27;
 /// The first `modes` polynomial modes (1 to 27) for the mesh's vertices, 3V x modes.
 /// Throws std::invalid_argument for a count out of range or a mesh with no extent.
 Eigen::MatrixXd polynomial_basis(const TriangleMesh& mesh, int modes);
+
+/// The same polynomial functions (centred and scaled by the mesh's bounding box, not
+/// normalised per mode) evaluated at arbitrary points, 3P x modes: the extension of the
+/// modes into a volume mesh.
+Eigen::MatrixXd polynomial_displacements(const std::vector<Eigen::Vector3d>& points, const TriangleMesh& mesh,
+                                         int modes);
 
 }  // namespace sscc
