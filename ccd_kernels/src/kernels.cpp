@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
 #include "contact_params.hpp"
+#include "sscc/ccd/moving_frame.hpp"
 #include "exact/projected_decider.hpp"
 #include "filter/coplanar_filter.hpp"
 #include "separation/separation_search.hpp"
@@ -45,25 +47,35 @@ void check_options(PrimitivePair pair, const CcdOptions& options) {
   }
 }
 
+enum class Frame : std::uint8_t {
+  kFixed,   ///< the coordinates as given
+  kMoving,  ///< moving with the four points' mean displacement (moving_frame.hpp)
+};
+
 /// Per axis, the bounds over the whole step of the first group of points (the triangle, or
 /// edge a) and of the second (the vertex, or edge b).
 struct SweptBoxes {
   double lo[2][3];
   double hi[2][3];
 
-  explicit SweptBoxes(const FourPointMotion& m) {
+  SweptBoxes(const FourPointMotion& m, Frame frame) {
     const int split = m.pair == PrimitivePair::kVertexFace ? 3 : 2;
     for (int k = 0; k < 3; ++k) {
       for (int g = 0; g < 2; ++g) {
         lo[g][k] = INFINITY;
         hi[g][k] = -INFINITY;
       }
+      double shift = 0.0;
+      if (frame == Frame::kMoving) {
+        for (int i = 0; i < 4; ++i) shift += 0.25 * (m.t1[i][k] - m.t0[i][k]);
+      }
       for (int i = 0; i < 4; ++i) {
         const int g = i < split ? 0 : 1;
         const double a = m.t0[i][k];
-        const double b = m.t1[i][k];
-        lo[g][k] = std::min(lo[g][k], std::min(a, b));
-        hi[g][k] = std::max(hi[g][k], std::max(a, b));
+        const double b_lo = frame == Frame::kMoving ? shifted_lower(m.t1[i][k], shift) : m.t1[i][k];
+        const double b_hi = frame == Frame::kMoving ? shifted_upper(m.t1[i][k], shift) : m.t1[i][k];
+        lo[g][k] = std::min(lo[g][k], std::min(a, b_lo));
+        hi[g][k] = std::max(hi[g][k], std::max(a, b_hi));
       }
     }
   }
@@ -107,8 +119,13 @@ CcdResult decide(const FourPointMotion& motion, const CcdOptions& options) {
   check_finite(motion);
   const double tolerance = std::max(options.toi_tolerance, kMinToiTolerance);
   CcdResult result;
-  const SweptBoxes boxes(motion);
+  const SweptBoxes boxes(motion, Frame::kFixed);
   if (boxes.disjoint(options.minimum_separation)) return result;
+  // The moving frame's arithmetic stays far from overflow within the filters' range.
+  if (boxes.max_magnitude() <= filter::kFilterMaxMagnitude &&
+      SweptBoxes(motion, Frame::kMoving).disjoint(options.minimum_separation)) {
+    return result;
+  }
   if (options.minimum_separation > 0.0) {
     return separation_search(motion, options.minimum_separation, tolerance);
   }

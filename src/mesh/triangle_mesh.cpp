@@ -67,31 +67,6 @@ TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Tr
   for (std::size_t e = 0; e < edges_.size(); ++e) edge_triangle_offsets_[e + 1] += edge_triangle_offsets_[e];
 }
 
-const int* TriangleMesh::triangles_of_edge_begin(int e) const {
-  return edge_triangles_.data() + edge_triangle_offsets_[e];
-}
-
-const int* TriangleMesh::triangles_of_edge_end(int e) const {
-  return edge_triangles_.data() + edge_triangle_offsets_[e + 1];
-}
-
-const int* TriangleMesh::triangles_of_vertex_begin(int v) const {
-  return vertex_triangles_.data() + vertex_triangle_offsets_[v];
-}
-
-const int* TriangleMesh::triangles_of_vertex_end(int v) const {
-  return vertex_triangles_.data() + vertex_triangle_offsets_[v + 1];
-}
-
-bool TriangleMesh::adjacent(int a, int b) const {
-  const Triangle& x = triangles_[a];
-  const Triangle& y = triangles_[b];
-  for (int i : x) {
-    if (i == y[0] || i == y[1] || i == y[2]) return true;
-  }
-  return false;
-}
-
 double TriangleMesh::bounding_box_diagonal() const {
   if (vertices_.empty()) return 0.0;
   Eigen::Vector3d lo = vertices_[0];

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <climits>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <tuple>
 
 #include "sscc/ccd/kernels.hpp"
+#include "sscc/ccd/moving_frame.hpp"
 
 namespace sscc {
 
@@ -37,11 +38,12 @@ Aabb box_at(const std::vector<Eigen::Vector3d>& x, const Triangle& t) {
   return {x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]), x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]])};
 }
 
-/// Node boxes computed on first use (each at most once per query).
+/// Node boxes computed on first use (each at most once per query). The boxes start
+/// default-initialised (not zeroed: most are never read), the flags zeroed.
 template <typename Box>
 class LazyBoxes {
  public:
-  explicit LazyBoxes(std::size_t nodes) : boxes_(nodes), known_(nodes, 0) {}
+  explicit LazyBoxes(std::size_t nodes) : boxes_(new Box[nodes]), known_(nodes, 0) {}
   template <typename Compute>
   const Box& get(int n, Compute compute) {
     if (!known_[n]) {
@@ -52,23 +54,62 @@ class LazyBoxes {
   }
 
  private:
-  std::vector<Box> boxes_;
+  std::unique_ptr<Box[]> boxes_;
   std::vector<char> known_;
 };
 
-Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
-Aabb shifted(const Aabb& a, const Eigen::Vector3d& by) { return {a.lo - by, a.hi - by}; }
-Eigen::Vector3d centre(const Aabb& a) { return 0.5 * (a.lo + a.hi); }
+inline bool overlap(const Aabb& a, const Aabb& b) {
+  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+}
+inline Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
 
-/// Boxes of an object (triangle or node) at t = 0 and at t = 1.
-using EndBoxes = std::array<Aabb, 2>;
+/// An object (triangle or node) over the step: its boxes at t = 0 and at t = 1. The box of
+/// the whole step is their hull.
+struct Sweep {
+  Aabb start, end;
+
+  /// The empty sweep, neutral for merge().
+  static Sweep empty() {
+    const Aabb none{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
+    return {none, none};
+  }
+  void merge(const Sweep& part) {
+    start = hull(start, part.start);
+    end = hull(end, part.end);
+  }
+  double swept_lo(int k) const { return std::min(start.lo[k], end.lo[k]); }
+  double swept_hi(int k) const { return std::max(start.hi[k], end.hi[k]); }
+  /// The displacement of the box centre along axis k.
+  double motion(int k) const { return 0.5 * ((end.lo[k] + end.hi[k]) - (start.lo[k] + start.hi[k])); }
+};
+
+/// Whether the boxes of the whole step overlap.
+inline bool swept_overlap(const Sweep& a, const Sweep& b) {
+  for (int k = 0; k < 3; ++k) {
+    if (a.swept_hi(k) < b.swept_lo(k) || b.swept_hi(k) < a.swept_lo(k)) return false;
+  }
+  return true;
+}
 
 /// Contact is unchanged when one translation, linear in t, moves both objects: with their
 /// mean displacement taken out, neighbours that move alike sweep small boxes. Apart there
-/// means apart.
-bool apart_in_common_frame(const EndBoxes& a, const EndBoxes& b) {
-  const Eigen::Vector3d common = 0.5 * ((centre(a[1]) - centre(a[0])) + (centre(b[1]) - centre(b[0])));
-  return !hull(a[0], shifted(a[1], common)).overlaps(hull(b[0], shifted(b[1], common)));
+/// means apart (the shifted ends bounded whatever the rounding: ccd/moving_frame.hpp).
+inline bool apart_in_common_frame(const Sweep& a, const Sweep& b) {
+  for (int k = 0; k < 3; ++k) {
+    const double common = 0.5 * (a.motion(k) + b.motion(k));
+    const double a_lo = std::min(a.start.lo[k], ccd::shifted_lower(a.end.lo[k], common));
+    const double a_hi = std::max(a.start.hi[k], ccd::shifted_upper(a.end.hi[k], common));
+    const double b_lo = std::min(b.start.lo[k], ccd::shifted_lower(b.end.lo[k], common));
+    const double b_hi = std::max(b.start.hi[k], ccd::shifted_upper(b.end.hi[k], common));
+    if (a_hi < b_lo || b_hi < a_lo) return true;
+  }
+  return false;
+}
+
+/// Whether two sweeps may touch: their step boxes overlap, also in their common frame.
+inline bool sweeps_may_touch(const Sweep& a, const Sweep& b) {
+  return swept_overlap(a, b) && !apart_in_common_frame(a, b);
 }
 
 /// What every query needs per call: the positions computed so far, the feature results,
@@ -88,7 +129,8 @@ class StepContext {
         x1_(mesh_.vertex_count()),
         computed_(mesh_.vertex_count(), 0),
         subspace_boxes_(bvh.nodes().size()),
-        end_boxes_(bvh.nodes().size()) {}
+        node_sweeps_(bvh.nodes().size()),
+        triangle_sweeps_(mesh_.triangle_count()) {}
 
   /// Whether two nodes may hold touching triangles. With refitted boxes the test is also
   /// made in the nodes' common moving frame: their mean displacement taken out of both
@@ -97,41 +139,49 @@ class StepContext {
     ++stats_.box_tests;
     if (options_.bounds == NodeBounds::kSubspace) {
       const auto swept = [&](int n) { return bvh_.swept_box(n, q_hat0_, q_hat1_, s_); };
-      return subspace_boxes_.get(a, swept).overlaps(subspace_boxes_.get(b, swept));
+      return overlap(subspace_boxes_.get(a, swept), subspace_boxes_.get(b, swept));
     }
-    const EndBoxes& ea = node_end_boxes(a);
-    const EndBoxes& eb = node_end_boxes(b);
-    return hull(ea[0], ea[1]).overlaps(hull(eb[0], eb[1])) && !apart_in_common_frame(ea, eb);
+    return sweeps_may_touch(node_sweep(a), node_sweep(b));
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
+
+  /// Whether the triangle at position i of the BVH's order can touch anything in node n:
+  /// the cheap test that prunes a leaf pair's triangle loops.
+  bool triangle_meets_node(int i, int n) {
+    if (options_.bounds == NodeBounds::kSubspace) return true;
+    return swept_overlap(triangle_sweep(i), node_sweep(n));
+  }
 
   /// Kernels on the features of a non-adjacent triangle pair whose swept boxes meet. Each
   /// feature pair is tested in one triangle pair only, its owner: the smallest
   /// non-adjacent pair of triangles containing it. Whenever the feature's boxes overlap,
   /// every triangle and node box containing them overlaps too, so the owner is visited.
-  void test_triangle_pair(int a, int b) {
+  /// The triangles at positions i and j of the BVH's order.
+  void test_triangle_pair(int i, int j) {
     if (stop_) return;
-    const EndBoxes ends_a = triangle_end_boxes(a);
-    const EndBoxes ends_b = triangle_end_boxes(b);
-    const Aabb box_a = hull(ends_a[0], ends_a[1]);
-    const Aabb box_b = hull(ends_b[0], ends_b[1]);
-    if (!box_a.overlaps(box_b) || mesh_.adjacent(a, b) || apart_in_common_frame(ends_a, ends_b)) return;
+    const int a = bvh_.triangle_order()[i];
+    const int b = bvh_.triangle_order()[j];
+    if (mesh_.adjacent(a, b) || !sweeps_may_touch(triangle_sweep(i), triangle_sweep(j))) return;
     ++stats_.triangle_pairs;
-    const std::pair<int, int> pair{std::min(a, b), std::max(a, b)};
+    const Aabb box_a = hull(triangle_sweep(i).start, triangle_sweep(i).end);
+    const Aabb box_b = hull(triangle_sweep(j).start, triangle_sweep(j).end);
     const Triangle& ta = mesh_.triangles()[a];
     const Triangle& tb = mesh_.triangles()[b];
     for (int i = 0; i < 3; ++i) {
-      if (point_box(ta[i]).overlaps(box_b) && owns_vertex_face(a, ta[i], b)) vertex_face(ta[i], b);
-      if (point_box(tb[i]).overlaps(box_a) && owns_vertex_face(b, tb[i], a)) vertex_face(tb[i], a);
+      if (overlap(point_box(ta[i]), box_b) && owns_vertex_face(a, ta[i], b)) vertex_face(ta[i], b);
+      if (overlap(point_box(tb[i]), box_a) && owns_vertex_face(b, tb[i], a)) vertex_face(tb[i], a);
     }
+    std::array<Aabb, 3> edges_b;
+    for (int j = 0; j < 3; ++j) edges_b[j] = edge_box(mesh_.triangle_edges(b)[j]);
+    const std::pair<int, int> pair{std::min(a, b), std::max(a, b)};
     for (int i = 0; i < 3; ++i) {
       const int e = mesh_.triangle_edges(a)[i];
       const Aabb edge_a = edge_box(e);
-      if (!edge_a.overlaps(box_b)) continue;
+      if (!overlap(edge_a, box_b)) continue;
       for (int j = 0; j < 3; ++j) {
         const int g = mesh_.triangle_edges(b)[j];
-        if (edge_a.overlaps(edge_box(g)) && edge_edge_owner(e, g) == pair) edge_edge(e, g);
+        if (overlap(edge_a, edges_b[j]) && owns_edge_edge(pair, e, g)) edge_edge(e, g);
       }
     }
   }
@@ -149,23 +199,27 @@ class StepContext {
   }
 
  private:
-  /// A node's boxes at both ends, refitted from its children's (or its triangles') on
-  /// first use: only the nodes the traversal reaches, and the vertices under them.
-  const EndBoxes& node_end_boxes(int n) {
-    return end_boxes_.get(n, [&](int m) {
+  /// A node's sweep, refitted from its children's (or its triangles') on first use: only
+  /// the nodes the traversal reaches, and the vertices under them.
+  const Sweep& node_sweep(int n) {
+    return node_sweeps_.get(n, [&](int m) {
       const SubspaceBvh::Node& node = bvh_.nodes()[m];
-      const Aabb empty{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
-      EndBoxes box{empty, empty};
-      const auto add = [&](const EndBoxes& part) {
-        box[0] = hull(box[0], part[0]);
-        box[1] = hull(box[1], part[1]);
-      };
+      Sweep sweep = Sweep::empty();
       if (node.is_leaf()) {
-        for (int i = node.triangle_begin; i < node.triangle_end; ++i) add(triangle_end_boxes(bvh_.triangle_order()[i]));
+        for (int i = node.triangle_begin; i < node.triangle_end; ++i) sweep.merge(triangle_sweep(i));
       } else {
-        for (int c = node.first_child; c < node.first_child + node.child_count; ++c) add(node_end_boxes(c));
+        for (int c = node.first_child; c < node.first_child + node.child_count; ++c) sweep.merge(node_sweep(c));
       }
-      return box;
+      return sweep;
+    });
+  }
+
+  /// The sweep of the triangle at position i of the BVH's order.
+  const Sweep& triangle_sweep(int i) {
+    return triangle_sweeps_.get(i, [&](int k) {
+      const Triangle& triangle = mesh_.triangles()[bvh_.triangle_order()[k]];
+      for (int v : triangle) ensure_vertex(v);
+      return Sweep{box_at(x0_, triangle), box_at(x1_, triangle)};
     });
   }
 
@@ -179,18 +233,9 @@ class StepContext {
 
   Aabb point_box(int v) const { return {x0_[v].cwiseMin(x1_[v]), x0_[v].cwiseMax(x1_[v])}; }
 
-  Aabb segment_box(const Edge& ends) const {
-    const Aabb a = point_box(ends[0]);
-    const Aabb b = point_box(ends[1]);
-    return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
-  }
-
-  Aabb edge_box(int e) const { return segment_box(mesh_.edges()[e]); }
-
-  EndBoxes triangle_end_boxes(int t) {
-    const Triangle& triangle = mesh_.triangles()[t];
-    for (int v : triangle) ensure_vertex(v);
-    return {box_at(x0_, triangle), box_at(x1_, triangle)};
+  Aabb edge_box(int e) const {
+    const Edge& ends = mesh_.edges()[e];
+    return hull(point_box(ends[0]), point_box(ends[1]));
   }
 
   /// Whether triangle t owns the vertex-face pair (v, f), v in t: the smallest non-adjacent
@@ -203,15 +248,16 @@ class StepContext {
     return false;
   }
 
-  /// The smallest non-adjacent triangle pair containing edges e and g.
-  std::pair<int, int> edge_edge_owner(int e, int g) const {
-    std::pair<int, int> owner{INT_MAX, INT_MAX};
+  /// Whether `pair` (ordered, non-adjacent, its triangles containing edges e and g) is the
+  /// smallest non-adjacent triangle pair containing them: no smaller pair of their
+  /// triangles is non-adjacent (the cheap order test first).
+  bool owns_edge_edge(const std::pair<int, int>& pair, int e, int g) const {
     for (const int* t = mesh_.triangles_of_edge_begin(e); t != mesh_.triangles_of_edge_end(e); ++t) {
       for (const int* u = mesh_.triangles_of_edge_begin(g); u != mesh_.triangles_of_edge_end(g); ++u) {
-        if (!mesh_.adjacent(*t, *u)) owner = std::min(owner, std::make_pair(std::min(*t, *u), std::max(*t, *u)));
+        if (std::make_pair(std::min(*t, *u), std::max(*t, *u)) < pair && !mesh_.adjacent(*t, *u)) return false;
       }
     }
-    return owner;
+    return true;
   }
 
   void record(const ccd::CcdResult& r, FeatureKind kind, int first, int second) {
@@ -275,7 +321,8 @@ class StepContext {
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
   LazyBoxes<Aabb> subspace_boxes_;
-  LazyBoxes<EndBoxes> end_boxes_;
+  LazyBoxes<Sweep> node_sweeps_;
+  LazyBoxes<Sweep> triangle_sweeps_;  // by position in the BVH's triangle order
   std::vector<FeatureContact> feature_hits_;
   SelfCcdStats stats_;
   bool stop_ = false;
@@ -301,7 +348,7 @@ class Traversal {
     const SubspaceBvh::Node& node = bvh_.nodes()[n];
     if (node.is_leaf()) {
       for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
-        for (int j = i + 1; j < node.triangle_end; ++j) pair(i, j);
+        for (int j = i + 1; j < node.triangle_end; ++j) context_.test_triangle_pair(i, j);
       }
       return;
     }
@@ -322,8 +369,15 @@ class Traversal {
     const SubspaceBvh::Node& na = bvh_.nodes()[a];
     const SubspaceBvh::Node& nb = bvh_.nodes()[b];
     if (na.is_leaf() && nb.is_leaf()) {
-      for (int i = na.triangle_begin; i < na.triangle_end; ++i) {
-        for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) pair(i, j);
+      // Only the triangles of each leaf that meet the other leaf's box.
+      std::array<int, kMaxLeafTriangles> from_b;
+      int count_b = 0;
+      for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) {
+        if (context_.triangle_meets_node(j, a)) from_b[count_b++] = j;
+      }
+      for (int i = na.triangle_begin; i < na.triangle_end && count_b > 0; ++i) {
+        if (!context_.triangle_meets_node(i, b)) continue;
+        for (int k = 0; k < count_b; ++k) context_.test_triangle_pair(i, from_b[k]);
       }
       return;
     }
@@ -337,11 +391,6 @@ class Traversal {
   }
 
  private:
-  void pair(int i, int j) {
-    const std::vector<int>& order = bvh_.triangle_order();
-    context_.test_triangle_pair(order[i], order[j]);
-  }
-
   const SubspaceBvh& bvh_;
   Context& context_;
   const Certificates* certificates_;
@@ -362,9 +411,13 @@ class DiscreteContext {
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
+  bool triangle_meets_node(int, int) const { return true; }
 
-  void test_triangle_pair(int a, int b) {
+  /// The triangles at positions i and j of the BVH's order.
+  void test_triangle_pair(int i, int j) {
     const TriangleMesh& mesh = bvh_.model().mesh();
+    const int a = bvh_.triangle_order()[i];
+    const int b = bvh_.triangle_order()[j];
     if (stop_ || mesh.adjacent(a, b)) return;
     const Triangle& ta = mesh.triangles()[a];
     const Triangle& tb = mesh.triangles()[b];
@@ -464,8 +517,8 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const Eigen::VectorXd q_hat1 = bvh_.model().scaled_coordinates(q1);
   StepContext context(bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options);
   const int n = bvh_.model().mesh().triangle_count();
-  for (int a = 0; a < n && !context.stopped(); ++a) {
-    for (int b = a + 1; b < n && !context.stopped(); ++b) context.test_triangle_pair(a, b);
+  for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
+    for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);
   }
   return context.finish(start);
 }

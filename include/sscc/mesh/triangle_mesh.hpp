@@ -27,14 +27,20 @@ class TriangleMesh {
   const std::vector<Edge>& edges() const { return edges_; }
   /// Indices into edges() of triangle t's edges (v0 v1), (v1 v2), (v2 v0).
   const std::array<int, 3>& triangle_edges(int t) const { return triangle_edges_[t]; }
+  // Inline: the collision queries call these in their innermost loops.
   /// The triangles that contain vertex v.
-  const int* triangles_of_vertex_begin(int v) const;
-  const int* triangles_of_vertex_end(int v) const;
+  const int* triangles_of_vertex_begin(int v) const { return vertex_triangles_.data() + vertex_triangle_offsets_[v]; }
+  const int* triangles_of_vertex_end(int v) const { return vertex_triangles_.data() + vertex_triangle_offsets_[v + 1]; }
   /// The triangles that contain edge e (two on a closed manifold).
-  const int* triangles_of_edge_begin(int e) const;
-  const int* triangles_of_edge_end(int e) const;
+  const int* triangles_of_edge_begin(int e) const { return edge_triangles_.data() + edge_triangle_offsets_[e]; }
+  const int* triangles_of_edge_end(int e) const { return edge_triangles_.data() + edge_triangle_offsets_[e + 1]; }
   /// Whether triangles a and b share a vertex (a triangle is adjacent to itself).
-  bool adjacent(int a, int b) const;
+  bool adjacent(int a, int b) const {
+    const Triangle& x = triangles_[a];
+    const Triangle& y = triangles_[b];
+    return ((x[0] == y[0]) | (x[0] == y[1]) | (x[0] == y[2])) | ((x[1] == y[0]) | (x[1] == y[1]) | (x[1] == y[2])) |
+           ((x[2] == y[0]) | (x[2] == y[1]) | (x[2] == y[2]));
+  }
   /// Length of the diagonal of the rest positions' bounding box.
   double bounding_box_diagonal() const;
 
