@@ -7,8 +7,10 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 
+#include "common/finite.hpp"
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/ccd/moving_frame.hpp"
 
@@ -131,6 +133,16 @@ class StepContext {
         subspace_boxes_(bvh.nodes().size()),
         node_sweeps_(bvh.nodes().size()),
         triangle_sweeps_(mesh_.triangle_count()) {}
+
+  /// Given positions at both ends (the traditional query on poses the subspace does not
+  /// hold): every vertex known, boxes refitted.
+  StepContext(const SubspaceBvh& bvh, std::vector<Eigen::Vector3d> x0, std::vector<Eigen::Vector3d> x1,
+              const SelfCcdOptions& options)
+      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options) {
+    x0_ = std::move(x0);
+    x1_ = std::move(x1);
+    std::fill(computed_.begin(), computed_.end(), 1);
+  }
 
   /// Whether two nodes may hold touching triangles. With refitted boxes the test is also
   /// made in the nodes' common moving frame: their mean displacement taken out of both
@@ -496,6 +508,29 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
   StepContext context(bvh_, q_hat0, q_hat1, s, options);
   Traversal<StepContext>(bvh_, context, certificates, s).intra(0);
+  return context.finish(start);
+}
+
+SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
+                                       const SelfCcdOptions& options) const {
+  const auto start = std::chrono::steady_clock::now();
+  const int vertices = bvh_.model().mesh().vertex_count();
+  for (const auto* x : {&x0, &x1}) {
+    if (static_cast<int>(x->size()) != vertices) {
+      throw std::invalid_argument("SelfCcd::query_positions: " + std::to_string(x->size()) +
+                                  " positions given for a mesh of " + std::to_string(vertices) + " vertices");
+    }
+    for (std::size_t v = 0; v < x->size(); ++v) {
+      if (!all_finite((*x)[v])) {
+        throw std::invalid_argument("SelfCcd::query_positions: vertex " + std::to_string(v) +
+                                    " has a NaN or infinite coordinate");
+      }
+    }
+  }
+  SelfCcdOptions refit = options;
+  refit.bounds = NodeBounds::kRefit;
+  StepContext context(bvh_, x0, x1, refit);
+  Traversal<StepContext>(bvh_, context, nullptr, 0.0).intra(0);
   return context.finish(start);
 }
 

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <random>
 #include <thread>
 
@@ -84,7 +85,11 @@ TEST_CASE("self-CCD: the traversal reports exactly what exhaustive testing does"
       sscc::SelfCcdOptions subspace;
       subspace.bounds = sscc::NodeBounds::kSubspace;
       const sscc::SelfCcdReport lazy = f.ccd.query(q0, q1, subspace);
+      const sscc::SelfCcdReport given =
+          f.ccd.query_positions(f.model.deformed_positions(q0), f.model.deformed_positions(q1));
       INFO("amplitude " << amplitude << " step " << step);
+      CHECK(given.pairs == all.pairs);
+      CHECK(given.features == all.features);
       CHECK(fast.pairs == all.pairs);
       CHECK(fast.features == all.features);
       CHECK(fast.earliest_toi == all.earliest_toi);
@@ -218,4 +223,15 @@ TEST_CASE("self-CCD: a step that does not move reports nothing, bad q is refused
   Eigen::VectorXd bad = rest;
   bad[4] = std::nan("");
   CHECK_THROWS_WITH(f.ccd.query(rest, bad), Catch::Contains("q[4] is not finite"));
+}
+
+TEST_CASE("self-CCD on given positions: wrong counts and non-finite coordinates are refused", "[query]") {
+  const Fixture f;
+  std::vector<Eigen::Vector3d> x = f.mesh.vertices();
+  std::vector<Eigen::Vector3d> short_x(x.begin(), x.end() - 1);
+  CHECK_THROWS_WITH(f.ccd.query_positions(x, short_x), Catch::Contains("positions given"));
+  std::vector<Eigen::Vector3d> bad = x;
+  bad[5][1] = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_WITH(f.ccd.query_positions(bad, x), Catch::Contains("vertex 5"));
+  CHECK_FALSE(f.ccd.query_positions(x, x).collided());
 }

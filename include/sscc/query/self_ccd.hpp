@@ -114,6 +114,13 @@ class SelfCcd {
   SelfCcdReport query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                       const SelfCcdOptions& options = {}) const;
 
+  /// The traditional query on explicit vertex positions at both ends of the step (each
+  /// vertex moving linearly): for poses the subspace does not hold, where certificates do
+  /// not apply. Refitted boxes, the same traversal and kernels. Throws
+  /// std::invalid_argument for a wrong count or a NaN/infinity.
+  SelfCcdReport query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
+                                const SelfCcdOptions& options = {}) const;
+
   /// Discrete query for a single configuration: the non-adjacent triangle pairs that
   /// intersect (exact), as pairs with toi 0; no features.
   SelfCcdReport query_discrete(const Eigen::VectorXd& q, const SelfCcdOptions& options = {}) const;
