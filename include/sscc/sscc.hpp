@@ -2,6 +2,9 @@
 // This umbrella header includes the public API.
 #pragma once
 
+#include "sscc/basis/linear_elasticity.hpp"
+#include "sscc/basis/modal_analysis.hpp"
+#include "sscc/basis/volume_mesh.hpp"
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/ccd/ccd_types.hpp"
 #include "sscc/ccd/kernels.hpp"
@@ -14,3 +17,4 @@
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/model/subspace_model.hpp"
 #include "sscc/query/self_ccd.hpp"
+#include "sscc/scene/scene.hpp"

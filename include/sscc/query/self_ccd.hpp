@@ -106,6 +106,7 @@ class SelfCcd {
   /// model or hierarchy.
   SelfCcd(const SubspaceBvh& bvh, const Certificates& certificates);
 
+  const SubspaceBvh& bvh() const { return bvh_; }
   const Certificates* certificates() const { return certificates_; }
 
   /// Swept-box traversal of the hierarchy (culled by the certificates), then the kernels.

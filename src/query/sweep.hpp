@@ -1,0 +1,98 @@
+// Swept boxes over one time step, shared by the self and inter-object queries: an object's
+// boxes at t = 0 and t = 1, their overlap tests (also in the two objects' common moving
+// frame), and per-query caches. Private to the library.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "sscc/bvh/subspace_bvh.hpp"
+#include "sscc/ccd/moving_frame.hpp"
+#include "sscc/mesh/triangle_mesh.hpp"
+
+namespace sscc::detail {
+
+/// Box of triangle t at positions x.
+inline Aabb box_at(const std::vector<Eigen::Vector3d>& x, const Triangle& t) {
+  return {x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]), x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]])};
+}
+
+/// Node boxes computed on first use (each at most once per query). The boxes start
+/// default-initialised (not zeroed: most are never read), the flags zeroed.
+template <typename Box>
+class LazyBoxes {
+ public:
+  explicit LazyBoxes(std::size_t nodes) : boxes_(new Box[nodes]), known_(nodes, 0) {}
+  template <typename Compute>
+  const Box& get(int n, Compute compute) {
+    if (!known_[n]) {
+      boxes_[n] = compute(n);
+      known_[n] = 1;
+    }
+    return boxes_[n];
+  }
+
+ private:
+  std::unique_ptr<Box[]> boxes_;
+  std::vector<char> known_;
+};
+
+inline bool overlap(const Aabb& a, const Aabb& b) {
+  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+}
+inline Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
+
+/// An object (triangle or node) over the step: its boxes at t = 0 and at t = 1. The box of
+/// the whole step is their hull.
+struct Sweep {
+  Aabb start, end;
+
+  /// The empty sweep, neutral for merge().
+  static Sweep empty() {
+    const Aabb none{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
+    return {none, none};
+  }
+  void merge(const Sweep& part) {
+    start = hull(start, part.start);
+    end = hull(end, part.end);
+  }
+  double swept_lo(int k) const { return std::min(start.lo[k], end.lo[k]); }
+  double swept_hi(int k) const { return std::max(start.hi[k], end.hi[k]); }
+  /// The displacement of the box centre along axis k.
+  double motion(int k) const { return 0.5 * ((end.lo[k] + end.hi[k]) - (start.lo[k] + start.hi[k])); }
+};
+
+/// Whether the boxes of the whole step overlap.
+inline bool swept_overlap(const Sweep& a, const Sweep& b) {
+  for (int k = 0; k < 3; ++k) {
+    if (a.swept_hi(k) < b.swept_lo(k) || b.swept_hi(k) < a.swept_lo(k)) return false;
+  }
+  return true;
+}
+
+/// Contact is unchanged when one translation, linear in t, moves both objects: with their
+/// mean displacement taken out, neighbours that move alike sweep small boxes. Apart there
+/// means apart (the shifted ends bounded whatever the rounding: ccd/moving_frame.hpp).
+inline bool apart_in_common_frame(const Sweep& a, const Sweep& b) {
+  for (int k = 0; k < 3; ++k) {
+    const double common = 0.5 * (a.motion(k) + b.motion(k));
+    const double a_lo = std::min(a.start.lo[k], ccd::shifted_lower(a.end.lo[k], common));
+    const double a_hi = std::max(a.start.hi[k], ccd::shifted_upper(a.end.hi[k], common));
+    const double b_lo = std::min(b.start.lo[k], ccd::shifted_lower(b.end.lo[k], common));
+    const double b_hi = std::max(b.start.hi[k], ccd::shifted_upper(b.end.hi[k], common));
+    if (a_hi < b_lo || b_hi < a_lo) return true;
+  }
+  return false;
+}
+
+/// Whether two sweeps may touch: their step boxes overlap, also in their common frame.
+inline bool sweeps_may_touch(const Sweep& a, const Sweep& b) {
+  return swept_overlap(a, b) && !apart_in_common_frame(a, b);
+}
+
+}  // namespace sscc::detail

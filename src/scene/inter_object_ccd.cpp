@@ -1,0 +1,157 @@
+#include "scene/inter_object_ccd.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <tuple>
+
+#include "sscc/ccd/kernels.hpp"
+
+namespace sscc::detail {
+
+namespace {
+
+/// Whether triangle t is the first (in mesh order) around vertex v.
+bool first_around_vertex(const TriangleMesh& mesh, int v, int t) { return *mesh.triangles_of_vertex_begin(v) == t; }
+bool first_around_edge(const TriangleMesh& mesh, int e, int t) { return *mesh.triangles_of_edge_begin(e) == t; }
+
+Aabb point_box(ObjectMotion& m, int v) { return {m.start(v).cwiseMin(m.end(v)), m.start(v).cwiseMax(m.end(v))}; }
+Aabb edge_box(ObjectMotion& m, int e) {
+  const Edge& ends = m.mesh().edges()[e];
+  return hull(point_box(m, ends[0]), point_box(m, ends[1]));
+}
+Aabb swept_box(const Sweep& s) { return hull(s.start, s.end); }
+
+}  // namespace
+
+InterObjectCcd::InterObjectCcd(ObjectMotion& a, int object_a, ObjectMotion& b, int object_b,
+                               const SceneOptions& options)
+    : a_(a), b_(b), object_a_(object_a), object_b_(object_b), options_(options) {}
+
+bool InterObjectCcd::roots_meet() {
+  ++box_tests_;
+  return sweeps_may_touch(a_.node_sweep(0), b_.node_sweep(0));
+}
+
+void InterObjectCcd::run() { traverse(0, 0); }
+
+void InterObjectCcd::run_exhaustive() {
+  const int na = a_.mesh().triangle_count();
+  const int nb = b_.mesh().triangle_count();
+  for (int i = 0; i < na && !stop_; ++i) {
+    for (int j = 0; j < nb && !stop_; ++j) test_triangle_pair(i, j);
+  }
+}
+
+void InterObjectCcd::traverse(int node_a, int node_b) {
+  if (stop_) return;
+  ++box_tests_;
+  if (!sweeps_may_touch(a_.node_sweep(node_a), b_.node_sweep(node_b))) return;
+  const SubspaceBvh::Node& na = a_.bvh().nodes()[node_a];
+  const SubspaceBvh::Node& nb = b_.bvh().nodes()[node_b];
+  if (na.is_leaf() && nb.is_leaf()) {
+    std::array<int, kMaxLeafTriangles> from_b;
+    int count_b = 0;
+    for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) {
+      if (swept_overlap(b_.triangle_sweep(j), a_.node_sweep(node_a))) from_b[count_b++] = j;
+    }
+    for (int i = na.triangle_begin; i < na.triangle_end && count_b > 0; ++i) {
+      if (!swept_overlap(a_.triangle_sweep(i), b_.node_sweep(node_b))) continue;
+      for (int k = 0; k < count_b; ++k) test_triangle_pair(i, from_b[k]);
+    }
+    return;
+  }
+  const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >=
+                                                              nb.triangle_end - nb.triangle_begin);
+  const SubspaceBvh::Node& split = split_a ? na : nb;
+  for (int c = split.first_child; c < split.first_child + split.child_count; ++c) {
+    split_a ? traverse(c, node_b) : traverse(node_a, c);
+  }
+}
+
+void InterObjectCcd::test_triangle_pair(int i, int j) {
+  if (stop_) return;
+  const Sweep& sweep_a = a_.triangle_sweep(i);
+  const Sweep& sweep_b = b_.triangle_sweep(j);
+  if (!sweeps_may_touch(sweep_a, sweep_b)) return;
+  ++triangle_pairs_;
+  const int ta = a_.bvh().triangle_order()[i];
+  const int tb = b_.bvh().triangle_order()[j];
+  const TriangleMesh& mesh_a = a_.mesh();
+  const TriangleMesh& mesh_b = b_.mesh();
+  const Aabb box_a = swept_box(sweep_a);
+  const Aabb box_b = swept_box(sweep_b);
+  for (int k = 0; k < 3; ++k) {
+    const int v = mesh_a.triangles()[ta][k];
+    if (first_around_vertex(mesh_a, v, ta) && overlap(point_box(a_, v), box_b)) vertex_face(a_, object_a_, v, b_, object_b_, tb);
+    const int w = mesh_b.triangles()[tb][k];
+    if (first_around_vertex(mesh_b, w, tb) && overlap(point_box(b_, w), box_a)) vertex_face(b_, object_b_, w, a_, object_a_, ta);
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int e = mesh_a.triangle_edges(ta)[k];
+    if (!first_around_edge(mesh_a, e, ta)) continue;
+    const Aabb box_e = edge_box(a_, e);
+    if (!overlap(box_e, box_b)) continue;
+    for (int l = 0; l < 3; ++l) {
+      const int g = mesh_b.triangle_edges(tb)[l];
+      if (first_around_edge(mesh_b, g, tb) && overlap(box_e, edge_box(b_, g))) edge_edge(e, g);
+    }
+  }
+}
+
+void InterObjectCcd::vertex_face(ObjectMotion& vertex_side, int object_v, int v, ObjectMotion& face_side, int object_f,
+                                 int f) {
+  if (stop_) return;
+  ++kernel_calls_;
+  const Triangle& t = face_side.mesh().triangles()[f];
+  const ccd::CcdResult r = ccd::vertex_face_ccd(vertex_side.start(v), face_side.start(t[0]), face_side.start(t[1]),
+                                                face_side.start(t[2]), vertex_side.end(v), face_side.end(t[0]),
+                                                face_side.end(t[1]), face_side.end(t[2]), options_.kernel);
+  if (!r.hit) return;
+  features_.push_back({FeatureKind::kVertexFace, object_v, v, object_f, f, r.toi});
+  if (options_.mode == SelfCcdMode::kAnyHit) stop_ = true;
+}
+
+void InterObjectCcd::edge_edge(int e, int g) {
+  if (stop_) return;
+  ++kernel_calls_;
+  const Edge& p = a_.mesh().edges()[e];
+  const Edge& q = b_.mesh().edges()[g];
+  const ccd::CcdResult r = ccd::edge_edge_ccd(a_.start(p[0]), a_.start(p[1]), b_.start(q[0]), b_.start(q[1]),
+                                              a_.end(p[0]), a_.end(p[1]), b_.end(q[0]), b_.end(q[1]), options_.kernel);
+  if (!r.hit) return;
+  features_.push_back({FeatureKind::kEdgeEdge, object_a_, e, object_b_, g, r.toi});
+  if (options_.mode == SelfCcdMode::kAnyHit) stop_ = true;
+}
+
+std::vector<InterObjectContact> InterObjectCcd::contacts() const {
+  std::map<std::tuple<int, int, int, int>, double> earliest;
+  const auto add = [&](int object_x, int x, int object_y, int y, double toi) {
+    const auto key = object_x < object_y ? std::make_tuple(object_x, x, object_y, y) : std::make_tuple(object_y, y, object_x, x);
+    const auto [it, inserted] = earliest.emplace(key, toi);
+    if (!inserted) it->second = std::min(it->second, toi);
+  };
+  const auto mesh_of = [&](int object) -> const TriangleMesh& { return object == object_a_ ? a_.mesh() : b_.mesh(); };
+  for (const InterObjectFeature& c : features_) {
+    const TriangleMesh& first = mesh_of(c.object_first);
+    const TriangleMesh& second = mesh_of(c.object_second);
+    if (c.kind == FeatureKind::kVertexFace) {
+      for (const int* t = first.triangles_of_vertex_begin(c.first); t != first.triangles_of_vertex_end(c.first); ++t) {
+        add(c.object_first, *t, c.object_second, c.second, c.toi);
+      }
+    } else {
+      for (const int* t = first.triangles_of_edge_begin(c.first); t != first.triangles_of_edge_end(c.first); ++t) {
+        for (const int* u = second.triangles_of_edge_begin(c.second); u != second.triangles_of_edge_end(c.second); ++u) {
+          add(c.object_first, *t, c.object_second, *u, c.toi);
+        }
+      }
+    }
+  }
+  std::vector<InterObjectContact> result;
+  for (const auto& [key, toi] : earliest) {
+    result.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key), toi});
+  }
+  return result;
+}
+
+}  // namespace sscc::detail

@@ -1,0 +1,227 @@
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <random>
+#include <tuple>
+#include <thread>
+
+#include "brute_force.hpp"
+#include "sscc/certificates/certificates.hpp"
+#include "sscc/model/polynomial_basis.hpp"
+#include "sscc/scene/scene.hpp"
+#include "support/test_meshes.hpp"
+
+namespace {
+
+constexpr int kModes = 9;
+
+struct Fixture {
+  sscc::TriangleMesh mesh = sscc::test::uv_sphere(8, 12);
+  sscc::SubspaceModel model{mesh, sscc::polynomial_basis(mesh, kModes), Eigen::VectorXd::Ones(kModes)};
+  sscc::SubspaceBvh bvh{model};
+  sscc::SelfCcd ccd{bvh};
+};
+
+sscc::RigidFrame frame(const Eigen::Vector3d& axis, double angle, const Eigen::Vector3d& translation) {
+  sscc::RigidFrame f;
+  f.rotation = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+  f.translation = translation;
+  return f;
+}
+
+Eigen::VectorXd random_q(std::mt19937_64& rng, double amplitude) {
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd q(kModes);
+  for (int j = 0; j < kModes; ++j) q[j] = amplitude * normal(rng) / 3.0;
+  return q;
+}
+
+std::vector<Eigen::Vector3d> world_positions(const sscc::SubspaceModel& model, const Eigen::VectorXd& q,
+                                             const sscc::RigidFrame& f) {
+  std::vector<Eigen::Vector3d> x = model.deformed_positions(q);
+  for (auto& p : x) p = f.rotation * p + f.translation;
+  return x;
+}
+
+/// Independent of the library's inter-object code: all triangle pairs of all object pairs,
+/// all 15 features through the kernels, world positions computed here.
+std::vector<sscc::InterObjectContact> brute_force(const sscc::SubspaceModel& model,
+                                                  const std::vector<sscc::ObjectStep>& steps) {
+  std::vector<sscc::InterObjectContact> contacts;
+  const int n = model.mesh().vertex_count();
+  for (std::size_t a = 0; a < steps.size(); ++a) {
+    for (std::size_t b = a + 1; b < steps.size(); ++b) {
+      std::vector<Eigen::Vector3d> x0 = world_positions(model, steps[a].q0, steps[a].frame0);
+      std::vector<Eigen::Vector3d> x1 = world_positions(model, steps[a].q1, steps[a].frame1);
+      const auto y0 = world_positions(model, steps[b].q0, steps[b].frame0);
+      const auto y1 = world_positions(model, steps[b].q1, steps[b].frame1);
+      x0.insert(x0.end(), y0.begin(), y0.end());
+      x1.insert(x1.end(), y1.begin(), y1.end());
+      for (int ta = 0; ta < model.mesh().triangle_count(); ++ta) {
+        for (int tb = 0; tb < model.mesh().triangle_count(); ++tb) {
+          sscc::Triangle shifted = model.mesh().triangles()[tb];
+          for (int& v : shifted) v += n;
+          const double toi = sscc::validation::triangle_pair_first_contact(x0, x1, model.mesh().triangles()[ta], shifted);
+          if (toi <= 1.0) contacts.push_back({int(a), ta, int(b), tb, toi});
+        }
+      }
+    }
+  }
+  std::sort(contacts.begin(), contacts.end(), [](const auto& x, const auto& y) {
+    return std::make_tuple(x.object_a, x.triangle_a, x.object_b, x.triangle_b) <
+           std::make_tuple(y.object_a, y.triangle_a, y.object_b, y.triangle_b);
+  });
+  return contacts;
+}
+
+/// Three deforming, rotating spheres, each moving a fraction `closing` of the way to a common point.
+std::vector<sscc::ObjectStep> random_steps(std::mt19937_64& rng, double amplitude, double closing) {
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<sscc::ObjectStep> steps(3);
+  const Eigen::Vector3d centres[3] = {{0, 0, 0}, {3.6, 0.45, 0}, {1.65, 3.45, 0.3}};
+  const Eigen::Vector3d middle(1.8, 1.35, 0.15);
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d axis(uniform(rng), uniform(rng), uniform(rng) + 2.0);
+    steps[i].q0 = random_q(rng, amplitude);
+    steps[i].q1 = steps[i].q0 + random_q(rng, amplitude);
+    steps[i].frame0 = frame(axis, uniform(rng), centres[i]);
+    steps[i].frame1 = frame(axis, uniform(rng), centres[i] + closing * (middle - centres[i]));
+  }
+  return steps;
+}
+
+}  // namespace
+
+TEST_CASE("scene: inter-object contacts equal exhaustive and brute-force testing", "[scene]") {
+  const Fixture f;
+  sscc::Scene scene;
+  for (int i = 0; i < 3; ++i) scene.add_object(f.ccd);
+  std::mt19937_64 rng(7);
+  int colliding = 0, apart = 0;
+  for (double closing : {0.0, 0.3, 0.45, 0.6}) {
+    for (int trial = 0; trial < 3; ++trial) {
+      const auto steps = random_steps(rng, 0.3, closing);
+      const sscc::SceneReport r = scene.step(steps);
+      INFO("closing " << closing << " trial " << trial);
+      CHECK(r.contacts == scene.inter_object_exhaustive(steps));
+      const auto expected = brute_force(f.model, steps);
+      REQUIRE(r.contacts.size() == expected.size());
+      for (std::size_t k = 0; k < expected.size(); ++k) {
+        CHECK(r.contacts[k].object_a == expected[k].object_a);
+        CHECK(r.contacts[k].triangle_a == expected[k].triangle_a);
+        CHECK(r.contacts[k].object_b == expected[k].object_b);
+        CHECK(r.contacts[k].triangle_b == expected[k].triangle_b);
+        CHECK(std::abs(r.contacts[k].toi - expected[k].toi) <= sscc::ccd::kDefaultToiTolerance);
+      }
+      // Self contacts are each object's own query.
+      for (int i = 0; i < 3; ++i) CHECK(r.objects[i].report.pairs == f.ccd.query(steps[i].q0, steps[i].q1).pairs);
+      (r.contacts.empty() ? apart : colliding) += 1;
+      if (!r.contacts.empty()) {
+        double earliest = 1.0;
+        for (const auto& c : r.contacts) earliest = std::min(earliest, c.toi);
+        CHECK(r.earliest_toi <= earliest);
+        CHECK(r.collided());
+      }
+    }
+  }
+  CHECK(colliding >= 3);
+  CHECK(apart >= 3);
+}
+
+TEST_CASE("scene: earliest-only and any-hit modes", "[scene]") {
+  const Fixture f;
+  sscc::Scene scene;
+  for (int i = 0; i < 3; ++i) scene.add_object(f.ccd);
+  std::mt19937_64 rng(11);
+  int tested = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    const auto steps = random_steps(rng, 0.3, 0.6);
+    const sscc::SceneReport all = scene.step(steps);
+    if (!all.collided()) continue;
+    ++tested;
+    sscc::SceneOptions earliest;
+    earliest.mode = sscc::SelfCcdMode::kEarliest;
+    const sscc::SceneReport first = scene.step(steps, earliest);
+    CHECK(first.earliest_toi == all.earliest_toi);
+    for (const auto& c : first.contacts) CHECK(c.toi == all.earliest_toi);
+    for (const auto& o : first.objects) {
+      for (const auto& p : o.report.pairs) CHECK(p.toi == all.earliest_toi);
+    }
+    sscc::SceneOptions any;
+    any.mode = sscc::SelfCcdMode::kAnyHit;
+    CHECK(scene.step(steps, any).collided());
+  }
+  CHECK(tested >= 3);
+}
+
+TEST_CASE("scene: a scene where nothing moves costs nothing; certified objects cost O(r)", "[scene]") {
+  const Fixture f;
+  const sscc::Certificates certificates = sscc::Certificates::precompute(f.bvh);
+  const sscc::SelfCcd certified(f.bvh, certificates);
+  sscc::Scene scene;
+  for (int i = 0; i < 4; ++i) scene.add_object(certified);
+  std::vector<sscc::ObjectStep> steps(4);
+  for (int i = 0; i < 4; ++i) {
+    steps[i].q0 = steps[i].q1 = Eigen::VectorXd::Constant(kModes, 0.01 * i);
+    steps[i].frame0 = steps[i].frame1 = frame({0, 0, 1}, 0.3 * i, {4.0 * i, 0, 0});
+  }
+  const sscc::SceneReport still = scene.step(steps);
+  CHECK(still.stats.objects_static == 4);
+  CHECK(still.stats.object_pairs == 6);
+  CHECK(still.stats.object_pairs_culled == 6);
+  CHECK(still.stats.inter_vertices_computed == 0);
+  CHECK(still.stats.inter_box_tests == 0);
+  for (const auto& o : still.objects) CHECK(o.outcome == sscc::SelfTestOutcome::kStatic);
+  CHECK_FALSE(still.collided());
+
+  // Small deformations, far apart: certified, one box test per pair, no vertex computed.
+  const double radius = certificates.node_radius(0);
+  REQUIRE(radius > 0.0);
+  for (int i = 0; i < 4; ++i) {
+    steps[i].q0 = Eigen::VectorXd::Constant(kModes, 0.2 * radius / 3.0);
+    steps[i].q1 = Eigen::VectorXd::Constant(kModes, -0.2 * radius / 3.0);
+    steps[i].frame1.translation += Eigen::Vector3d(0, 0.1, 0);
+  }
+  const sscc::SceneReport modest = scene.step(steps);
+  CHECK(modest.stats.objects_certified == 4);
+  for (const auto& o : modest.objects) CHECK(o.outcome == sscc::SelfTestOutcome::kCertified);
+  CHECK(modest.stats.object_pairs_culled == 6);
+  CHECK(modest.stats.inter_box_tests == 6);
+  CHECK(modest.stats.inter_vertices_computed == 0);
+}
+
+TEST_CASE("scene: per-object switches, bad input, concurrent steps", "[scene]") {
+  const Fixture f;
+  sscc::Scene scene;
+  scene.add_object(f.ccd);
+  scene.add_object(f.ccd, {false, true});
+  scene.add_object(f.ccd, {true, false});
+  std::mt19937_64 rng(5);
+  const auto steps = random_steps(rng, 0.3, 0.6);
+  const sscc::SceneReport r = scene.step(steps);
+  CHECK(r.objects[1].outcome == sscc::SelfTestOutcome::kSwitchedOff);
+  CHECK(r.stats.object_pairs == 1);
+  for (const auto& c : r.contacts) CHECK((c.object_a == 0 && c.object_b == 1));
+
+  std::vector<sscc::SceneReport> concurrent(2);
+  std::thread other([&] { concurrent[0] = scene.step(steps); });
+  concurrent[1] = scene.step(steps);
+  other.join();
+  for (const auto& c : concurrent) {
+    CHECK(c.contacts == r.contacts);
+    CHECK(c.features == r.features);
+  }
+
+  CHECK_THROWS_WITH(scene.step({steps[0]}), Catch::Contains("1 object steps given for 3"));
+  auto bad = steps;
+  bad[2].frame1.rotation(0, 1) += 0.1;
+  CHECK_THROWS_WITH(scene.step(bad), Catch::Contains("object 2") && Catch::Contains("not a rotation"));
+  bad = steps;
+  bad[1].q0[3] = std::nan("");
+  CHECK_THROWS_WITH(scene.step(bad), Catch::Contains("object 1") && Catch::Contains("not finite"));
+  bad = steps;
+  bad[0].q1 = Eigen::VectorXd::Zero(2);
+  CHECK_THROWS_WITH(scene.step(bad), Catch::Contains("object 0"));
+}
