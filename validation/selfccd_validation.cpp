@@ -7,7 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "brute_force.hpp"
+#include "fcl_settle.hpp"
 #include "fcl_self_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "trajectory.hpp"
@@ -15,8 +15,6 @@
 namespace sscc::validation {
 
 namespace {
-
-using PairList = std::vector<std::pair<int, int>>;
 
 struct MethodRun {
   std::vector<PairList> pairs;           // per step
@@ -149,7 +147,7 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       const MethodRun& b = runs[o.methods[j]];
       const bool full = !a.reports.empty() && !b.reports.empty();
       int identical = 0;
-      long false_positive = 0, false_negative = 0, unexplained = 0;
+      SettledDisagreements settled;
       for (int k = 0; k < o.steps; ++k) {
         const bool same = full ? a.reports[k].pairs == b.reports[k].pairs && a.reports[k].features == b.reports[k].features
                                : a.pairs[k] == b.pairs[k];
@@ -161,28 +159,18 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
         }
         // One side is FCL: the exact kernels decide each pair the two disagree on.
         const bool a_is_fcl = o.methods[i] == "fcl";
-        const PairList& fcl_pairs = a_is_fcl ? a.pairs[k] : b.pairs[k];
-        const PairList& ours = a_is_fcl ? b.pairs[k] : a.pairs[k];
-        // The exact kernels on all 15 features of each disputed pair.
-        const std::vector<Eigen::Vector3d> x0 = model.deformed_positions(q[k]);
-        const std::vector<Eigen::Vector3d> x1 = model.deformed_positions(q[k + 1]);
-        const auto touches = [&](const std::pair<int, int>& p) {
-          return triangle_pair_first_contact(x0, x1, model.mesh().triangles()[p.first],
-                                             model.mesh().triangles()[p.second]) <= 1.0;
-        };
-        PairList only_fcl, only_ours;
-        std::set_difference(fcl_pairs.begin(), fcl_pairs.end(), ours.begin(), ours.end(), std::back_inserter(only_fcl));
-        std::set_difference(ours.begin(), ours.end(), fcl_pairs.begin(), fcl_pairs.end(), std::back_inserter(only_ours));
-        for (const auto& p : only_fcl) (touches(p) ? unexplained : false_positive)++;
-        for (const auto& p : only_ours) (touches(p) ? false_negative : unexplained)++;
+        settled += settle_with_exact_kernels(model.mesh(), model.deformed_positions(q[k]),
+                                             model.deformed_positions(q[k + 1]), a_is_fcl ? a.pairs[k] : b.pairs[k],
+                                             a_is_fcl ? b.pairs[k] : a.pairs[k]);
       }
       out << "agreement " << o.methods[i] << " vs " << o.methods[j] << ": identical_steps=" << identical << "/"
           << o.steps << '\n';
       if (!full && identical != o.steps) {
         out << "disagreements settled by the exact kernels (" << o.methods[i] << " vs " << o.methods[j]
-            << "): fcl_false_positive_pairs=" << false_positive << " fcl_false_negative_pairs=" << false_negative
-            << " unexplained=" << unexplained << '\n';
-        problems += unexplained;
+            << "): fcl_false_positive_pairs=" << settled.fcl_false_positives
+            << " fcl_false_negative_pairs=" << settled.fcl_false_negatives << " unexplained=" << settled.unexplained
+            << '\n';
+        problems += settled.unexplained;
       }
     }
   }

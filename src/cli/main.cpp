@@ -13,6 +13,8 @@
 
 #include "basis_command.hpp"
 #include "certificate_sweep.hpp"
+#include "decimate_command.hpp"
+#include "demo/demo_command.hpp"
 #include "kernel_validation.hpp"
 #include "precompute_command.hpp"
 #include "selfccd_validation.hpp"
@@ -61,6 +63,26 @@ const char* kUsage =
     "                                   (default 100)\n"
     "            --output FILE.U        the basis; weights go to FILE.weights unless\n"
     "            --weights-output FILE  says otherwise\n"
+    "  demo      the main job: a scene of modal objects, CCD every step with certificates\n"
+    "            (SSCC) and without (traditional), FCL on a few steps; table, plots, and\n"
+    "            the line 'demo: scene=... speedup=X agree=yes|no'. With no options: sixteen\n"
+    "            bunnies dropped and struck (basis and certificates computed once, cached)\n"
+    "            --scene S              bunnies (default) or spring (a double-helix spring)\n"
+    "            --mesh FILE            another mesh (default data/bunny15k.off; spring: generated)\n"
+    "            --basis FILE.U         a modal basis with FILE.weights (default: modal analysis)\n"
+    "            --modes R              modes of the modal analysis (default 30; spring 20)\n"
+    "            --objects N            instances (default 16; spring 1)\n"
+    "            --steps N --dt S       time steps and their length (default 300, 0.01 s)\n"
+    "            --seed S               the scene's random events (default 1)\n"
+    "            --fcl-steps N          steps also run through FCL (default 4; 0: none)\n"
+    "            --damping Z            damping ratio of every mode (default 0.1; spring 0.02)\n"
+    "            --youngs E --poisson NU --density RHO   material for the modal analysis\n"
+    "                                   (default 2e7 Pa, 0.4, 1100 kg/m^3: stiff rubber;\n"
+    "                                   spring 2e11, 0.3, 7800: steel)\n"
+    "            --cache DIR            basis and certificates (default demo-cache)\n"
+    "            --output DIR           plots and CSV (default demo-output)\n"
+    "  decimate  quadric edge collapse of a mesh to a triangle count (OpenMesh)\n"
+    "            --mesh FILE --triangles N (default 15000) --output FILE.off\n"
     "  selfccd   continuous self-collision over a seeded random trajectory\n"
     "            --mesh FILE            OFF, OBJ or PLY\n"
     "            --basis polynomial:R | FILE.U | FILE   (default polynomial:27)\n"
@@ -259,6 +281,47 @@ int run_basis(const std::vector<std::string>& args) {
   return run_report(options, flags.quiet, sscc::validation::run_basis, "basis");
 }
 
+int run_demo(const std::vector<std::string>& args) {
+  for (const std::string& a : args) {
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      return 0;
+    }
+  }
+  const Flags flags = parse_flags(args,
+                                  {"--scene", "--mesh", "--basis", "--modes", "--objects", "--steps", "--dt", "--seed",
+                                   "--fcl-steps", "--damping", "--youngs", "--poisson", "--density", "--cache", "--output"},
+                                  "demo");
+  sscc::validation::DemoOptions options;
+  if (flags.has("--scene")) options.scene = flags.text("--scene");
+  if (flags.has("--mesh")) options.mesh = flags.text("--mesh");
+  if (flags.has("--basis")) options.basis = flags.text("--basis");
+  if (flags.has("--modes")) options.modes = flags.number<int>("--modes");
+  if (flags.has("--objects")) options.objects = flags.number<int>("--objects");
+  if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
+  if (flags.has("--dt")) options.dt = flags.number<double>("--dt");
+  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
+  if (flags.has("--fcl-steps")) options.fcl_steps = flags.number<int>("--fcl-steps");
+  if (flags.has("--damping")) options.damping_ratio = flags.number<double>("--damping");
+  if (flags.has("--youngs")) options.youngs_modulus = flags.real("--youngs");
+  if (flags.has("--poisson")) options.poisson_ratio = flags.real("--poisson");
+  if (flags.has("--density")) options.density = flags.real("--density");
+  if (flags.has("--cache")) options.cache_dir = flags.text("--cache");
+  if (flags.has("--output")) options.output_dir = flags.text("--output");
+  return run_report(options, flags.quiet, sscc::validation::run_demo, "demo");
+}
+
+int run_decimate(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args, {"--mesh", "--triangles", "--output"}, "decimate");
+  if (!flags.has("--mesh")) usage_error("decimate needs --mesh FILE");
+  if (!flags.has("--output")) usage_error("decimate needs --output FILE");
+  sscc::validation::DecimateCommandOptions options;
+  options.mesh = flags.text("--mesh");
+  options.output = flags.text("--output");
+  if (flags.has("--triangles")) options.triangles = flags.number<int>("--triangles");
+  return run_report(options, flags.quiet, sscc::validation::run_decimate, "decimate");
+}
+
 int run_selfccd(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(
       args,
@@ -290,6 +353,8 @@ int main(int argc, char** argv) {
     if (command == "precompute") return run_precompute(args);
     if (command == "certificates") return run_certificate_sweep(args);
     if (command == "basis") return run_basis(args);
+    if (command == "decimate") return run_decimate(args);
+    if (command == "demo") return run_demo(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;

@@ -57,6 +57,8 @@ class StepContext {
         q_hat0_(q_hat0),
         q_hat1_(q_hat1),
         s_(s),
+        norm0_(q_hat0.stableNorm()),
+        norm1_(q_hat1.stableNorm()),
         x0_(mesh_.vertex_count()),
         x1_(mesh_.vertex_count()),
         computed_(mesh_.vertex_count(), 0),
@@ -146,6 +148,9 @@ class StepContext {
   const Sweep& node_sweep(int n) {
     return node_sweeps_.get(n, [&](int m) {
       const SubspaceBvh::Node& node = bvh_.nodes()[m];
+      if (options_.bounds == NodeBounds::kHybrid && node.triangle_end - node.triangle_begin > kRefitTriangleLimit) {
+        return Sweep{bvh_.box(m, q_hat0_, norm0_), bvh_.box(m, q_hat1_, norm1_)};
+      }
       Sweep sweep = Sweep::empty();
       if (node.is_leaf()) {
         for (int i = node.triangle_begin; i < node.triangle_end; ++i) sweep.merge(triangle_sweep(i));
@@ -259,7 +264,7 @@ class StepContext {
   const TriangleMesh& mesh_;
   const SelfCcdOptions& options_;
   Eigen::VectorXd q_hat0_, q_hat1_;
-  double s_;
+  double s_, norm0_, norm1_;
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
   LazyBoxes<Aabb> subspace_boxes_;

@@ -21,38 +21,51 @@ ObjectMotion::ObjectMotion(const SubspaceBvh& bvh, const ObjectStep& step)
       norm1_(q_hat1_.stableNorm()),
       frame0_(step.frame0),
       frame1_(step.frame1),
-      x0_(mesh().vertex_count()),
-      x1_(mesh().vertex_count()),
-      computed_(mesh().vertex_count(), 0),
-      node_sweeps_(bvh.nodes().size()),
-      triangle_sweeps_(mesh().triangle_count()) {}
+      root_(bvh.nodes()[0].is_leaf() ? Sweep::empty() : subspace_sweep(0)) {}
+
+ObjectMotion::Cache::Cache(const SubspaceBvh& bvh)
+    : x0(bvh.model().mesh().vertex_count()),
+      x1(bvh.model().mesh().vertex_count()),
+      computed(bvh.model().mesh().vertex_count(), 0),
+      node_sweeps(bvh.nodes().size()),
+      triangle_sweeps(bvh.model().mesh().triangle_count()) {}
+
+ObjectMotion::Cache& ObjectMotion::cache() {
+  if (!cache_) cache_ = std::make_unique<Cache>(bvh_);
+  return *cache_;
+}
+
+Sweep ObjectMotion::subspace_sweep(int n) const {
+  return Sweep{world_box(bvh_.box(n, q_hat0_, norm0_), frame0_), world_box(bvh_.box(n, q_hat1_, norm1_), frame1_)};
+}
 
 void ObjectMotion::ensure(int v) {
-  if (computed_[v]) return;
+  Cache& c = cache();
+  if (c.computed[v]) return;
   const SubspaceModel& model = bvh_.model();
-  x0_[v] = frame0_.rotation * model.position(v, q_hat0_) + frame0_.translation;
-  x1_[v] = frame1_.rotation * model.position(v, q_hat1_) + frame1_.translation;
-  computed_[v] = 1;
+  c.x0[v] = frame0_.rotation * model.position(v, q_hat0_) + frame0_.translation;
+  c.x1[v] = frame1_.rotation * model.position(v, q_hat1_) + frame1_.translation;
+  c.computed[v] = 1;
   ++vertices_computed_;
 }
 
 const Sweep& ObjectMotion::node_sweep(int n) {
-  return node_sweeps_.get(n, [&](int m) {
+  if (n == 0 && !bvh_.nodes()[0].is_leaf()) return root_;
+  return cache().node_sweeps.get(n, [&](int m) {
     const SubspaceBvh::Node& node = bvh_.nodes()[m];
-    if (node.is_leaf()) {
-      Sweep sweep = Sweep::empty();
-      for (int i = node.triangle_begin; i < node.triangle_end; ++i) sweep.merge(triangle_sweep(i));
-      return sweep;
-    }
-    return Sweep{world_box(bvh_.box(m, q_hat0_, norm0_), frame0_), world_box(bvh_.box(m, q_hat1_, norm1_), frame1_)};
+    if (!node.is_leaf()) return subspace_sweep(m);
+    Sweep sweep = Sweep::empty();
+    for (int i = node.triangle_begin; i < node.triangle_end; ++i) sweep.merge(triangle_sweep(i));
+    return sweep;
   });
 }
 
 const Sweep& ObjectMotion::triangle_sweep(int i) {
-  return triangle_sweeps_.get(i, [&](int k) {
+  return cache().triangle_sweeps.get(i, [&](int k) {
     const Triangle& t = mesh().triangles()[bvh_.triangle_order()[k]];
     for (int v : t) ensure(v);
-    return Sweep{box_at(x0_, t), box_at(x1_, t)};
+    const Cache& c = cache();
+    return Sweep{box_at(c.x0, t), box_at(c.x1, t)};
   });
 }
 

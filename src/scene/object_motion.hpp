@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 #include "query/sweep.hpp"
@@ -31,11 +32,11 @@ class ObjectMotion {
   /// World positions of vertex v at the two ends.
   const Eigen::Vector3d& start(int v) {
     ensure(v);
-    return x0_[v];
+    return cache().x0[v];
   }
   const Eigen::Vector3d& end(int v) {
     ensure(v);
-    return x1_[v];
+    return cache().x1[v];
   }
   /// Node n's sweep: its subspace bound at each end, in world space (O(r)); for leaves the
   /// hull of its triangles' exact sweeps, which is tighter.
@@ -45,16 +46,25 @@ class ObjectMotion {
   long vertices_computed() const { return vertices_computed_; }
 
  private:
+  /// Per-vertex and per-node storage, made on first use: most objects of a step are
+  /// decided by their root's bound alone.
+  struct Cache {
+    explicit Cache(const SubspaceBvh& bvh);
+    std::vector<Eigen::Vector3d> x0, x1;
+    std::vector<char> computed;
+    LazyBoxes<Sweep> node_sweeps;
+    LazyBoxes<Sweep> triangle_sweeps;
+  };
+  Cache& cache();
   void ensure(int v);
+  Sweep subspace_sweep(int n) const;
 
   const SubspaceBvh& bvh_;
   Eigen::VectorXd q_hat0_, q_hat1_;
   double norm0_, norm1_;
   RigidFrame frame0_, frame1_;
-  std::vector<Eigen::Vector3d> x0_, x1_;
-  std::vector<char> computed_;
-  LazyBoxes<Sweep> node_sweeps_;
-  LazyBoxes<Sweep> triangle_sweeps_;
+  Sweep root_;
+  std::unique_ptr<Cache> cache_;
   long vertices_computed_ = 0;
 };
 

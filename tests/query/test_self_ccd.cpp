@@ -85,6 +85,11 @@ TEST_CASE("self-CCD: the traversal reports exactly what exhaustive testing does"
       sscc::SelfCcdOptions subspace;
       subspace.bounds = sscc::NodeBounds::kSubspace;
       const sscc::SelfCcdReport lazy = f.ccd.query(q0, q1, subspace);
+      sscc::SelfCcdOptions refit;
+      refit.bounds = sscc::NodeBounds::kRefit;
+      const sscc::SelfCcdReport refitted = f.ccd.query(q0, q1, refit);
+      CHECK(refitted.pairs == all.pairs);
+      CHECK(refitted.features == all.features);
       const sscc::SelfCcdReport given =
           f.ccd.query_positions(f.model.deformed_positions(q0), f.model.deformed_positions(q1));
       INFO("amplitude " << amplitude << " step " << step);
@@ -207,7 +212,7 @@ TEST_CASE("self-CCD: huge coordinates with tiny modes keep every bound finite", 
   const Eigen::VectorXd q1 = Eigen::VectorXd::Constant(1, 1e160);
   const auto expected = detector.query_exhaustive(q0, q1).pairs;
   CHECK(expected.size() == 4);
-  for (auto bounds : {sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
+  for (auto bounds : {sscc::NodeBounds::kHybrid, sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
     sscc::SelfCcdOptions options;
     options.bounds = bounds;
     CHECK(detector.query(q0, q1, options).pairs == expected);

@@ -59,20 +59,30 @@ enum class SelfCcdMode : std::uint8_t {
                  ///< triangle pairs that contain it
 };
 
-/// How node boxes are bounded over the step.
+/// Nodes with more triangles than this are bounded by their O(r) subspace bound under
+/// NodeBounds::kHybrid, smaller ones by refitting. Self-collision culls at the lower levels
+/// (siblings high up always touch), so loose boxes up there cost little, while refitting a
+/// large node would compute every vertex under it. Lower: fewer vertices computed in steps
+/// the certificates nearly decide, more node tests; higher: the reverse.
+inline constexpr int kRefitTriangleLimit = 64;
+
+/// How node boxes are bounded over the step (each is computed at most once per query, for
+/// the nodes the traversal reaches).
 enum class NodeBounds : std::uint8_t {
-  /// Boxes refitted bottom-up from the vertex positions at both ends, computed for the
-  /// nodes the traversal reaches (every node without certificates, 3Vr flops): tight
-  /// whatever the deformation. The default.
+  /// Subspace bounds for nodes above kRefitTriangleLimit triangles, refitted boxes below:
+  /// the vertices computed are those near where the traversal goes. The default.
+  kHybrid,
+  /// Boxes refitted bottom-up from the vertex positions at both ends (3r flops per vertex
+  /// under the node): tight whatever the deformation.
   kRefit,
-  /// The O(r) subspace bounds of SubspaceBvh, vertex positions only where a leaf needs
-  /// them: cheap for small deformations, loose for large ones.
+  /// The O(r) subspace bounds of SubspaceBvh for every node, vertex positions only where a
+  /// leaf needs them: cheap for small deformations, loose for large ones.
   kSubspace,
 };
 
 struct SelfCcdOptions {
   SelfCcdMode mode = SelfCcdMode::kAllContacts;
-  NodeBounds bounds = NodeBounds::kRefit;
+  NodeBounds bounds = NodeBounds::kHybrid;
   /// Cull by the certificates when the detector has them; false gives the traditional query.
   bool use_certificates = true;
   /// The kernels' options. A minimum separation (kernel.minimum_separation > 0) cannot be

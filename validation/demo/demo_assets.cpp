@@ -1,0 +1,121 @@
+#include "demo/demo_assets.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "basis_command.hpp"
+#include "demo/spring_mesh.hpp"
+#include "sscc/basis/modal_analysis.hpp"
+#include "sscc/mesh/mesh_io.hpp"
+#include "sscc/model/basis_io.hpp"
+
+#ifndef SSCC_DATA_DIR
+#define SSCC_DATA_DIR "data"
+#endif
+
+namespace sscc::validation {
+
+namespace fs = std::filesystem;
+
+std::string data_dir() { return SSCC_DATA_DIR; }
+
+namespace {
+
+/// Identifies the mesh and the modal parameters a cached basis was made from.
+std::string basis_key(const TriangleMesh& mesh, const DemoAssetOptions& o) {
+  std::ostringstream text;
+  text << std::hexfloat << mesh.vertex_count() << ' ' << mesh.triangle_count();
+  for (const auto& p : mesh.vertices()) text << ' ' << p[0] << ' ' << p[1] << ' ' << p[2];
+  for (const auto& t : mesh.triangles()) text << ' ' << t[0] << ' ' << t[1] << ' ' << t[2];
+  std::ostringstream key;
+  key << "sscc demo basis v1 mesh " << std::hash<std::string>{}(text.str()) << " modes " << o.modes << " E "
+      << o.material.youngs_modulus << " nu " << o.material.poisson_ratio << " rho " << o.material.density;
+  return key.str();
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
+  DemoAssets assets;
+  TriangleMesh mesh = [&] {
+    if (!o.mesh.empty()) {
+      assets.name = fs::path(o.mesh).stem().string();
+      return read_mesh(o.mesh);
+    }
+    if (o.generated_mesh == "spring") {
+      assets.name = "spring";
+      return double_helix_spring();
+    }
+    assets.name = "bunny15k";
+    return read_mesh(data_dir() + "/bunny15k.off");
+  }();
+  progress << "demo: mesh " << assets.name << ": " << mesh.vertex_count() << " vertices, " << mesh.triangle_count()
+           << " triangles\n";
+  Eigen::MatrixXd basis;
+  Eigen::VectorXd weights;
+  if (!o.basis.empty()) {
+    basis = read_basis(o.basis);
+    weights = read_weights(default_weights_path(o.basis));
+  } else {
+    fs::create_directories(o.cache_dir);
+    char stem[256];
+    std::snprintf(stem, sizeof stem, "%s/%s-modal%d", o.cache_dir.c_str(), assets.name.c_str(), o.modes);
+    const std::string basis_path = std::string(stem) + ".U", key_path = std::string(stem) + ".key";
+    const std::string key = basis_key(mesh, o);
+    if (fs::exists(basis_path) && fs::exists(key_path) && read_text(key_path) == key) {
+      basis = read_basis(basis_path);
+      weights = read_weights(default_weights_path(basis_path));
+      progress << "demo: modal basis from the cache (" << basis_path << ")\n";
+    } else {
+      progress << "demo: modal analysis (first run; cached in " << o.cache_dir << ")\n";
+      const auto start = std::chrono::steady_clock::now();
+      ElasticBasisOptions options;
+      options.modes = o.modes;
+      options.material = o.material;
+      ElasticBasis modal = modal_basis(mesh, options, &progress);
+      basis = std::move(modal.basis);
+      weights = std::move(modal.weights);
+      write_vega_basis(basis_path, basis);
+      write_weights(default_weights_path(basis_path), weights);
+      std::ofstream(key_path) << key;
+      progress << "demo: modal analysis done in " << seconds_since(start) << " s, lowest frequency "
+               << modal.frequencies_hz[0] << " Hz\n";
+    }
+  }
+  assets.model = std::make_unique<SubspaceModel>(std::move(mesh), basis, weights);
+  assets.bvh = std::make_unique<SubspaceBvh>(*assets.model);
+  const std::string certificate_path =
+      o.cache_dir + "/" + assets.name + "-r" + std::to_string(assets.model->mode_count()) + ".sscc";
+  try {
+    assets.certificates = std::make_unique<Certificates>(Certificates::read(certificate_path, *assets.bvh));
+    progress << "demo: certificates from the cache (" << certificate_path << ")\n";
+  } catch (const CertificateFileError& e) {
+    progress << "demo: precomputing certificates (" << e.what() << ")\n";
+    const auto start = std::chrono::steady_clock::now();
+    assets.certificates = std::make_unique<Certificates>(
+        Certificates::precompute(*assets.bvh, {}, [&](int done, int levels) {
+          progress << "demo: certificates: level " << done << "/" << levels << " done\n" << std::flush;
+        }));
+    fs::create_directories(o.cache_dir);
+    assets.certificates->write(certificate_path);
+    progress << "demo: certificates done in " << seconds_since(start) << " s, cached in " << certificate_path << '\n';
+  }
+  return assets;
+}
+
+}  // namespace sscc::validation

@@ -1,0 +1,39 @@
+// Linear modal dynamics of a reduced deformable object: q_i'' + 2 zeta omega_i q_i' +
+// omega_i^2 q_i = f_i for mass-normalised modes (the modal basis' weights are omega_i^2 / 2),
+// integrated exactly per step for piecewise constant forces, so the step can be as long as
+// the demo needs without instability. Impulses change the modal velocities at once.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+#include "sscc/model/subspace_model.hpp"
+
+namespace sscc::validation {
+
+class ModalDynamics {
+ public:
+  /// omega_squared: the modes' eigenvalues (rad^2/s^2); damping ratio zeta in [0, 1); dt in s.
+  ModalDynamics(const Eigen::VectorXd& omega_squared, double damping_ratio, double dt);
+
+  const Eigen::VectorXd& q() const { return q_; }
+  const Eigen::VectorXd& velocity() const { return v_; }
+  /// Adds an impulse in modal coordinates (Phi^T J for nodal impulses J).
+  void add_impulse(const Eigen::VectorXd& modal_impulse) { v_ += modal_impulse; }
+  /// Advances one step under no force.
+  void step();
+
+ private:
+  // Per mode, the exact 2 x 2 propagator of (q, q') over one step.
+  Eigen::VectorXd qq_, qv_, vq_, vv_;
+  Eigen::VectorXd q_, v_;
+};
+
+/// The modal impulse Phi^T J of an impulse `total` (N s, in the body frame) spread evenly
+/// over `vertices`, for a model whose basis holds mass-normalised modes Phi (its weights
+/// omega^2 / 2: Phi = U_hat W^(1/2)).
+Eigen::VectorXd modal_impulse(const SubspaceModel& model, const std::vector<int>& vertices,
+                              const Eigen::Vector3d& total);
+
+}  // namespace sscc::validation
