@@ -1,11 +1,20 @@
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sscc/basis/volume_mesh.hpp"
+#include "sscc/query/self_ccd.hpp"
 
 #define TETLIBRARY
 #include <tetgen.h>
@@ -28,11 +37,16 @@ std::string tetgen_error(int code) {
 
 }  // namespace
 
-VolumeMesh tetrahedralize_surface(const TriangleMesh& mesh, double quality, double max_volume) {
-  if (!(quality >= 1.0)) throw std::invalid_argument("tetrahedralize_surface: quality bound must be at least 1");
-  if (!(max_volume >= 0.0) || !std::isfinite(max_volume)) {
-    throw std::invalid_argument("tetrahedralize_surface: the largest tetrahedron volume must be >= 0 (0: no bound)");
-  }
+namespace {
+
+/// What TetGen returns, flattened to cross a pipe.
+struct TetgenOutput {
+  std::vector<double> points;  // 3 per node
+  std::vector<int> tetrahedra;  // 4 per tetrahedron
+};
+
+/// Runs TetGen in this process. Throws std::runtime_error with TetGen's complaint.
+TetgenOutput run_tetgen(const TriangleMesh& mesh, const std::string& switches_in) {
   tetgenio in;
   tetgenio out;
   in.firstnumber = 0;
@@ -53,38 +67,148 @@ VolumeMesh tetrahedralize_surface(const TriangleMesh& mesh, double quality, doub
     facet.polygonlist[0].vertexlist = new int[3];
     for (int k = 0; k < 3; ++k) facet.polygonlist[0].vertexlist[k] = mesh.triangles()[f][k];
   }
-  // p: a piecewise linear complex; q: quality bound; Y: no Steiner points on the surface,
-  // so the surface vertices stay the first nodes; z: zero-based; Q: quiet.
-  std::ostringstream switches_text;
-  switches_text << std::setprecision(17) << "pq" << quality << "YzQ";
-  if (max_volume > 0.0) switches_text << "a" << max_volume;  // a: largest tetrahedron volume
-  std::string switches = switches_text.str();
+  std::string switches = switches_in;
   try {
     tetrahedralize(&switches[0], &in, &out);
   } catch (int code) {
     throw std::runtime_error(tetgen_error(code));
   }
-  if (out.numberofpoints < mesh.vertex_count() || out.numberoftetrahedra == 0) {
-    throw std::runtime_error("TetGen returned no tetrahedra");
+  TetgenOutput result;
+  result.points.assign(out.pointlist, out.pointlist + 3 * out.numberofpoints);
+  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+    for (int k = 0; k < 4; ++k) result.tetrahedra.push_back(out.tetrahedronlist[out.numberofcorners * t + k]);
   }
+  return result;
+}
+
+bool write_all(int fd, const void* data, std::size_t bytes) {
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0) {
+    const ssize_t n = ::write(fd, p, bytes);
+    if (n <= 0) return false;
+    p += n;
+    bytes -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// TetGen in a child process: on some invalid inputs it crashes instead of reporting (it
+/// frees its memory twice after finding self-intersections, seen with TetGen 1.5.0), and a
+/// crash there must not take the caller down. The child sends back an error message or the
+/// flattened result through a pipe.
+TetgenOutput run_tetgen_isolated(const TriangleMesh& mesh, const std::string& switches) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw std::runtime_error("TetGen: cannot create a pipe");
+  const pid_t child = ::fork();
+  if (child < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw std::runtime_error("TetGen: cannot fork");
+  }
+  if (child == 0) {
+    ::close(fds[0]);
+    int status = 0;
+    try {
+      const TetgenOutput out = run_tetgen(mesh, switches);
+      const std::uint64_t sizes[3] = {0, out.points.size(), out.tetrahedra.size()};
+      status = write_all(fds[1], sizes, sizeof sizes) &&
+                       write_all(fds[1], out.points.data(), out.points.size() * sizeof(double)) &&
+                       write_all(fds[1], out.tetrahedra.data(), out.tetrahedra.size() * sizeof(int))
+                   ? 0
+                   : 3;
+    } catch (const std::exception& e) {
+      const std::string message = e.what();
+      const std::uint64_t sizes[3] = {message.size(), 0, 0};
+      status = write_all(fds[1], sizes, sizeof sizes) && write_all(fds[1], message.data(), message.size()) ? 0 : 3;
+    }
+    ::close(fds[1]);
+    ::_exit(status);
+  }
+  ::close(fds[1]);
+  std::string received;
+  char buffer[1 << 16];
+  for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    received.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFSIGNALED(status)) {
+    throw std::runtime_error("TetGen crashed on this surface (signal " + std::to_string(WTERMSIG(status)) +
+                             "): degenerate or self-intersecting triangles?");
+  }
+  std::uint64_t sizes[3] = {0, 0, 0};
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || received.size() < sizeof sizes) {
+    throw std::runtime_error("TetGen failed without a result");
+  }
+  std::memcpy(sizes, received.data(), sizeof sizes);
+  const std::size_t expected = sizeof sizes + sizes[0] + sizes[1] * sizeof(double) + sizes[2] * sizeof(int);
+  if (received.size() != expected) throw std::runtime_error("TetGen's result was cut short");
+  if (sizes[0] > 0) throw std::runtime_error(received.substr(sizeof sizes, sizes[0]));
+  TetgenOutput out;
+  out.points.resize(sizes[1]);
+  out.tetrahedra.resize(sizes[2]);
+  std::memcpy(out.points.data(), received.data() + sizeof sizes, sizes[1] * sizeof(double));
+  std::memcpy(out.tetrahedra.data(), received.data() + sizeof sizes + sizes[1] * sizeof(double), sizes[2] * sizeof(int));
+  return out;
+}
+
+/// The first pair of non-adjacent triangles that intersect, found exactly, or none: TetGen
+/// needs a surface that does not cross itself.
+std::optional<std::pair<int, int>> first_self_intersection(const TriangleMesh& mesh) {
+  const SubspaceModel still(mesh, Eigen::MatrixXd::Zero(3L * mesh.vertex_count(), 1), Eigen::VectorXd::Ones(1));
+  const SubspaceBvh bvh(still);
+  SelfCcdOptions options;
+  options.mode = SelfCcdMode::kAnyHit;
+  const SelfCcdReport report = SelfCcd(bvh).query_discrete(Eigen::VectorXd::Zero(1), options);
+  if (report.pairs.empty()) return std::nullopt;
+  return std::make_pair(report.pairs[0].first, report.pairs[0].second);
+}
+
+}  // namespace
+
+VolumeMesh tetrahedralize_surface(const TriangleMesh& mesh, double quality, double max_volume) {
+  if (!(quality >= 1.0)) throw std::invalid_argument("tetrahedralize_surface: quality bound must be at least 1");
+  if (!(max_volume >= 0.0) || !std::isfinite(max_volume)) {
+    throw std::invalid_argument("tetrahedralize_surface: the largest tetrahedron volume must be >= 0 (0: no bound)");
+  }
+  if (const auto crossing = first_self_intersection(mesh)) {
+    throw std::runtime_error("the surface intersects itself (triangles " + std::to_string(crossing->first) + " and " +
+                             std::to_string(crossing->second) + "); TetGen needs one that does not");
+  }
+  // p: a piecewise linear complex; q: quality bound; Y: no Steiner points on the surface,
+  // so the surface vertices stay the first nodes; z: zero-based; Q: quiet.
+  std::ostringstream switches;
+  switches << std::setprecision(17) << "pq" << quality << "YzQ";
+  if (max_volume > 0.0) switches << "a" << max_volume;  // a: largest tetrahedron volume
+  const TetgenOutput out = run_tetgen_isolated(mesh, switches.str());
+  const int nodes = static_cast<int>(out.points.size() / 3);
+  const int tetrahedra = static_cast<int>(out.tetrahedra.size() / 4);
+  if (nodes < mesh.vertex_count() || tetrahedra == 0) throw std::runtime_error("TetGen returned no tetrahedra");
   VolumeMesh volume;
   volume.method = "tetgen";
-  volume.nodes.resize(out.numberofpoints);
-  for (int n = 0; n < out.numberofpoints; ++n) {
-    volume.nodes[n] = Eigen::Vector3d(out.pointlist[3 * n], out.pointlist[3 * n + 1], out.pointlist[3 * n + 2]);
+  volume.nodes.resize(nodes);
+  for (int n = 0; n < nodes; ++n) {
+    volume.nodes[n] = Eigen::Vector3d(out.points[3 * n], out.points[3 * n + 1], out.points[3 * n + 2]);
   }
   for (int v = 0; v < mesh.vertex_count(); ++v) {
     if (volume.nodes[v] != mesh.vertices()[v]) {
       throw std::runtime_error("TetGen moved surface vertex " + std::to_string(v) + " (duplicate vertices?)");
     }
   }
-  volume.tetrahedra.resize(out.numberoftetrahedra);
-  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+  volume.tetrahedra.resize(tetrahedra);
+  for (int t = 0; t < tetrahedra; ++t) {
     Tetrahedron tet;
-    for (int k = 0; k < 4; ++k) tet[k] = out.tetrahedronlist[out.numberofcorners * t + k];
+    for (int k = 0; k < 4; ++k) {
+      tet[k] = out.tetrahedra[4 * t + k];
+      if (tet[k] < 0 || tet[k] >= nodes) throw std::runtime_error("TetGen returned a tetrahedron with a bad node");
+    }
     volume.tetrahedra[t] = positively_oriented(volume.nodes, tet);
   }
-  volume.embedding.resize(mesh.vertex_count(), out.numberofpoints);
+  volume.embedding.resize(mesh.vertex_count(), nodes);
   volume.embedding.reserve(Eigen::VectorXi::Ones(mesh.vertex_count()));
   for (int v = 0; v < mesh.vertex_count(); ++v) volume.embedding.insert(v, v) = 1.0;
   volume.embedding.makeCompressed();

@@ -95,3 +95,20 @@ TEST_CASE("the automatic volume method falls back to voxels and says why", "[bas
   CHECK(sscc::parse_volume_method("voxel") == sscc::VolumeMethod::voxel);
   CHECK_THROWS_WITH(sscc::parse_volume_method("hex"), Catch::Contains("'hex'"));
 }
+
+TEST_CASE("a closed surface that crosses itself is refused before TetGen sees it", "[basis]") {
+  // Two boxes, each closed and oriented, the second pushed into the first.
+  const sscc::TriangleMesh box = sscc::test::box_surface({1, 1, 1}, {2, 2, 2});
+  std::vector<Eigen::Vector3d> vertices = box.vertices();
+  std::vector<sscc::Triangle> triangles = box.triangles();
+  const int offset = box.vertex_count();
+  for (const auto& p : box.vertices()) vertices.push_back(p + Eigen::Vector3d(0.5, 0.3, 0.2));
+  for (const auto& t : box.triangles()) triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const sscc::TriangleMesh crossing(vertices, triangles);
+  REQUIRE(sscc::is_closed_manifold(crossing));
+  CHECK_THROWS_WITH(sscc::tetrahedralize_surface(crossing, 1.414), Catch::Contains("intersects itself"));
+  const sscc::VolumeMesh fallback = sscc::volume_mesh(crossing);
+  CHECK(fallback.method == "voxel");
+  CHECK_THAT(fallback.note, Catch::Contains("intersects itself"));
+  check_embedding(crossing, fallback);
+}
