@@ -176,6 +176,18 @@ void write_plots(const std::string& dir, std::ostream& progress) {
   render_plot(g.str(), dir + "/plots.gnuplot", dir + "/kernels_time_vs_error.png", progress);
 }
 
+std::vector<ToleranceTiming> toi_tolerance_sweep(const std::vector<Query>& vf, const std::vector<Query>& ee,
+                                                 int repeats) {
+  std::vector<ToleranceTiming> timings;
+  for (int e = 2; e <= 12; e += 2) {
+    ccd::CcdOptions o;
+    o.toi_tolerance = std::pow(10.0, -e);
+    const auto answer = [&](const Query& q) { return run_kernel(q, o).hit; };
+    timings.push_back({o.toi_tolerance, median_mean_us(vf, answer, repeats), median_mean_us(ee, answer, repeats)});
+  }
+  return timings;
+}
+
 void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Query>& ee,
                               const KernelValidationOptions& options, std::ostream& out,
                               std::ostream& progress) {
@@ -183,16 +195,11 @@ void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Qu
   progress << "sweep: time of impact tolerance 1e-2 .. 1e-12\n";
   std::ofstream toi(options.output_dir + "/toi_tolerance.csv");
   toi << "tolerance,vertex_face_mean_us,edge_edge_mean_us\n";
-  for (int e = 2; e <= 12; e += 2) {
-    ccd::CcdOptions o;
-    o.toi_tolerance = std::pow(10.0, -e);
-    const auto answer = [&](const Query& q) { return run_kernel(q, o).hit; };
-    const double vf_us = median_mean_us(vf, answer, options.repeats);
-    const double ee_us = median_mean_us(ee, answer, options.repeats);
-    toi << o.toi_tolerance << ',' << vf_us << ',' << ee_us << '\n';
+  for (const ToleranceTiming& t : toi_tolerance_sweep(vf, ee, options.repeats)) {
+    toi << t.tolerance << ',' << t.vertex_face_us << ',' << t.edge_edge_us << '\n';
     char line[160];
     std::snprintf(line, sizeof line, "toi-tolerance %.0e: vertex-face mean_us=%.3f edge-edge mean_us=%.3f",
-                  o.toi_tolerance, vf_us, ee_us);
+                  t.tolerance, t.vertex_face_us, t.edge_edge_us);
     out << line << '\n';
   }
   progress << "sweep: minimum separation d (sampled distances for confirmation)\n";
@@ -261,6 +268,14 @@ long report_random(const KernelValidationOptions& options, std::ostream& out,
 }
 
 }  // namespace
+
+std::vector<ToleranceTiming> time_against_toi_tolerance(long queries, std::uint64_t seed, int repeats) {
+  std::mt19937_64 rng(seed);
+  std::vector<Query> vf, ee;
+  for (long i = 0; i < queries; ++i) vf.push_back(random_query(Kind::kVertexFace, rng));
+  for (long i = 0; i < queries; ++i) ee.push_back(random_query(Kind::kEdgeEdge, rng));
+  return toi_tolerance_sweep(vf, ee, repeats);
+}
 
 long run_kernel_validation(const KernelValidationOptions& options, std::ostream& out,
                            std::ostream& progress) {

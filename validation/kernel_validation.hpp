@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace sscc::validation {
 
@@ -20,6 +21,16 @@ struct KernelValidationOptions {
   /// Timing repeats; the median is reported.
   int repeats = 5;
 };
+
+/// Mean kernel time per query at one time-of-impact tolerance.
+struct ToleranceTiming {
+  double tolerance;
+  double vertex_face_us, edge_edge_us;
+};
+
+/// The kernels' run time against their time-of-impact tolerance (1e-2 .. 1e-12) on
+/// `queries` seeded random queries of each kind, median of `repeats`.
+std::vector<ToleranceTiming> time_against_toi_tolerance(long queries, std::uint64_t seed, int repeats);
 
 /// Prints the report lines to `out` and progress to `progress`. Returns the number of
 /// disagreements with the ground truth or the exact reference (0 when all is well).

@@ -1,5 +1,7 @@
 // The sscc command-line tool: a thin shell over the library and its validation programs.
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "basis_command.hpp"
+#include "bench/bench_command.hpp"
 #include "certificate_sweep.hpp"
 #include "decimate_command.hpp"
 #include "demo/demo_command.hpp"
@@ -67,7 +70,8 @@ const char* kUsage =
     "            (SSCC) and without (traditional), FCL on a few steps; table, plots, and\n"
     "            the line 'demo: scene=... speedup=X agree=yes|no'. With no options: sixteen\n"
     "            bunnies dropped and struck (basis and certificates computed once, cached)\n"
-    "            --scene S              bunnies (default) or spring (a double-helix spring)\n"
+    "            --scene S              bunnies (default), spring (a double-helix spring) or\n"
+    "                                   dragon (../shared's dragon, polynomial modes)\n"
     "            --mesh FILE            another mesh (default data/bunny15k.off; spring: generated)\n"
     "            --basis FILE.U         a modal basis with FILE.weights (default: modal analysis)\n"
     "            --modes R              modes of the modal analysis (default 30; spring 20)\n"
@@ -81,6 +85,13 @@ const char* kUsage =
     "                                   spring 2e11, 0.3, 7800: steel)\n"
     "            --cache DIR            basis and certificates (default demo-cache)\n"
     "            --output DIR           plots and CSV (default demo-output)\n"
+    "  bench     the benchmarks beside the SSCC paper's Tables 1 and 2: the demo scenes (and the\n"
+    "            dragon when ../shared is there), certificate epsilon and kernel tolerance\n"
+    "            against time; bench.md, CSV and plots\n"
+    "            --steps N              steps per scene (default 300)\n"
+    "            --seed S --cache DIR   as for demo\n"
+    "            --kernel-queries N     random kernel queries per kind (default 20000)\n"
+    "            --output DIR           default bench-output\n"
     "  decimate  quadric edge collapse of a mesh to a triangle count (OpenMesh)\n"
     "            --mesh FILE --triangles N (default 15000) --output FILE.off\n"
     "  selfccd   continuous self-collision over a seeded random trajectory\n"
@@ -281,34 +292,59 @@ int run_basis(const std::vector<std::string>& args) {
   return run_report(options, flags.quiet, sscc::validation::run_basis, "basis");
 }
 
+/// The scene flags shared by demo and bench.
+const std::set<std::string> kSceneFlags{"--scene", "--mesh",      "--basis",  "--modes",   "--objects",
+                                        "--steps", "--dt",        "--seed",   "--fcl-steps", "--damping",
+                                        "--youngs", "--poisson", "--density", "--cache"};
+
+void scene_run_options(const Flags& flags, sscc::validation::SceneRunOptions& o) {
+  if (flags.has("--scene")) o.scene = flags.text("--scene");
+  if (flags.has("--mesh")) o.mesh = flags.text("--mesh");
+  if (flags.has("--basis")) o.basis = flags.text("--basis");
+  if (flags.has("--modes")) o.modes = flags.number<int>("--modes");
+  if (flags.has("--objects")) o.objects = flags.number<int>("--objects");
+  if (flags.has("--steps")) o.steps = flags.number<int>("--steps");
+  if (flags.has("--dt")) o.dt = flags.number<double>("--dt");
+  if (flags.has("--seed")) o.seed = flags.number<std::uint64_t>("--seed");
+  if (flags.has("--fcl-steps")) o.fcl_steps = flags.number<int>("--fcl-steps");
+  if (flags.has("--damping")) o.damping_ratio = flags.number<double>("--damping");
+  if (flags.has("--youngs")) o.youngs_modulus = flags.real("--youngs");
+  if (flags.has("--poisson")) o.poisson_ratio = flags.real("--poisson");
+  if (flags.has("--density")) o.density = flags.real("--density");
+  if (flags.has("--cache")) o.cache_dir = flags.text("--cache");
+}
+
+std::set<std::string> with_flags(std::set<std::string> flags, std::initializer_list<std::string> more) {
+  flags.insert(more);
+  return flags;
+}
+
+bool wants_help(const std::vector<std::string>& args) {
+  return std::find(args.begin(), args.end(), "--help") != args.end() ||
+         std::find(args.begin(), args.end(), "-h") != args.end();
+}
+
 int run_demo(const std::vector<std::string>& args) {
-  for (const std::string& a : args) {
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
-    }
+  if (wants_help(args)) {
+    std::cout << kUsage;
+    return 0;
   }
-  const Flags flags = parse_flags(args,
-                                  {"--scene", "--mesh", "--basis", "--modes", "--objects", "--steps", "--dt", "--seed",
-                                   "--fcl-steps", "--damping", "--youngs", "--poisson", "--density", "--cache", "--output"},
-                                  "demo");
+  const Flags flags = parse_flags(args, with_flags(kSceneFlags, {"--output"}), "demo");
   sscc::validation::DemoOptions options;
-  if (flags.has("--scene")) options.scene = flags.text("--scene");
-  if (flags.has("--mesh")) options.mesh = flags.text("--mesh");
-  if (flags.has("--basis")) options.basis = flags.text("--basis");
-  if (flags.has("--modes")) options.modes = flags.number<int>("--modes");
-  if (flags.has("--objects")) options.objects = flags.number<int>("--objects");
-  if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
-  if (flags.has("--dt")) options.dt = flags.number<double>("--dt");
-  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
-  if (flags.has("--fcl-steps")) options.fcl_steps = flags.number<int>("--fcl-steps");
-  if (flags.has("--damping")) options.damping_ratio = flags.number<double>("--damping");
-  if (flags.has("--youngs")) options.youngs_modulus = flags.real("--youngs");
-  if (flags.has("--poisson")) options.poisson_ratio = flags.real("--poisson");
-  if (flags.has("--density")) options.density = flags.real("--density");
-  if (flags.has("--cache")) options.cache_dir = flags.text("--cache");
+  scene_run_options(flags, options.run);
   if (flags.has("--output")) options.output_dir = flags.text("--output");
   return run_report(options, flags.quiet, sscc::validation::run_demo, "demo");
+}
+
+int run_bench(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args, {"--steps", "--seed", "--cache", "--kernel-queries", "--output"}, "bench");
+  sscc::validation::BenchOptions options;
+  if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
+  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
+  if (flags.has("--cache")) options.cache_dir = flags.text("--cache");
+  if (flags.has("--kernel-queries")) options.kernel_queries = flags.number<long>("--kernel-queries");
+  if (flags.has("--output")) options.output_dir = flags.text("--output");
+  return run_report(options, flags.quiet, sscc::validation::run_bench, "bench");
 }
 
 int run_decimate(const std::vector<std::string>& args) {
@@ -355,6 +391,7 @@ int main(int argc, char** argv) {
     if (command == "basis") return run_basis(args);
     if (command == "decimate") return run_decimate(args);
     if (command == "demo") return run_demo(args);
+    if (command == "bench") return run_bench(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;

@@ -32,7 +32,8 @@ std::string basis_key(const TriangleMesh& mesh, const DemoAssetOptions& o) {
   for (const auto& p : mesh.vertices()) text << ' ' << p[0] << ' ' << p[1] << ' ' << p[2];
   for (const auto& t : mesh.triangles()) text << ' ' << t[0] << ' ' << t[1] << ' ' << t[2];
   std::ostringstream key;
-  key << "sscc demo basis v1 mesh " << std::hash<std::string>{}(text.str()) << " modes " << o.modes << " E "
+  key << "sscc demo basis v1 mesh " << std::hash<std::string>{}(text.str()) << ' ' << o.basis_kind << " modes "
+      << o.modes << " E "
       << o.material.youngs_modulus << " nu " << o.material.poisson_ratio << " rho " << o.material.density;
   return key.str();
 }
@@ -74,38 +75,50 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
   } else {
     fs::create_directories(o.cache_dir);
     char stem[256];
-    std::snprintf(stem, sizeof stem, "%s/%s-modal%d", o.cache_dir.c_str(), assets.name.c_str(), o.modes);
+    std::snprintf(stem, sizeof stem, "%s/%s-%s%d", o.cache_dir.c_str(), assets.name.c_str(), o.basis_kind.c_str(),
+                  o.modes);
     const std::string basis_path = std::string(stem) + ".U", key_path = std::string(stem) + ".key";
     const std::string key = basis_key(mesh, o);
     if (fs::exists(basis_path) && fs::exists(key_path) && read_text(key_path) == key) {
       basis = read_basis(basis_path);
       weights = read_weights(default_weights_path(basis_path));
-      progress << "demo: modal basis from the cache (" << basis_path << ")\n";
+      progress << "demo: " << o.basis_kind << " basis from the cache (" << basis_path << ")\n";
     } else {
-      progress << "demo: modal analysis (first run; cached in " << o.cache_dir << ")\n";
+      if (o.basis_kind != "modal" && o.basis_kind != "polynomial") {
+        throw std::invalid_argument("demo: unknown basis kind '" + o.basis_kind + "' (modal, polynomial)");
+      }
+      progress << "demo: " << o.basis_kind << " basis (first run; cached in " << o.cache_dir << ")\n";
       const auto start = std::chrono::steady_clock::now();
       ElasticBasisOptions options;
       options.modes = o.modes;
       options.material = o.material;
-      ElasticBasis modal = modal_basis(mesh, options, &progress);
-      basis = std::move(modal.basis);
-      weights = std::move(modal.weights);
+      ElasticBasis made = o.basis_kind == "modal" ? modal_basis(mesh, options, &progress)
+                                                  : stiffness_scaled_polynomial_basis(mesh, options, &progress);
+      basis = std::move(made.basis);
+      weights = std::move(made.weights);
       write_vega_basis(basis_path, basis);
       write_weights(default_weights_path(basis_path), weights);
       std::ofstream(key_path) << key;
-      progress << "demo: modal analysis done in " << seconds_since(start) << " s, lowest frequency "
-               << modal.frequencies_hz[0] << " Hz\n";
+      assets.basis_seconds = seconds_since(start);
+      progress << "demo: basis done in " << assets.basis_seconds << " s, lowest frequency "
+               << made.frequencies_hz[0] << " Hz\n";
     }
   }
   assets.model = std::make_unique<SubspaceModel>(std::move(mesh), basis, weights);
   assets.bvh = std::make_unique<SubspaceBvh>(*assets.model);
-  const std::string certificate_path =
-      o.cache_dir + "/" + assets.name + "-r" + std::to_string(assets.model->mode_count()) + ".sscc";
-  try {
-    assets.certificates = std::make_unique<Certificates>(Certificates::read(certificate_path, *assets.bvh));
-    progress << "demo: certificates from the cache (" << certificate_path << ")\n";
-  } catch (const CertificateFileError& e) {
-    progress << "demo: precomputing certificates (" << e.what() << ")\n";
+  const std::string certificate_path = o.cache_dir + "/" + assets.name + "-" + o.basis_kind + "-r" +
+                                       std::to_string(assets.model->mode_count()) + ".sscc";
+  std::string why = "a fresh precomputation was asked for";
+  if (!o.fresh_certificates) {
+    try {
+      assets.certificates = std::make_unique<Certificates>(Certificates::read(certificate_path, *assets.bvh));
+      progress << "demo: certificates from the cache (" << certificate_path << ")\n";
+    } catch (const CertificateFileError& e) {
+      why = e.what();
+    }
+  }
+  if (!assets.certificates) {
+    progress << "demo: precomputing certificates (" << why << ")\n";
     const auto start = std::chrono::steady_clock::now();
     assets.certificates = std::make_unique<Certificates>(
         Certificates::precompute(*assets.bvh, {}, [&](int done, int levels) {
@@ -113,7 +126,9 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
         }));
     fs::create_directories(o.cache_dir);
     assets.certificates->write(certificate_path);
-    progress << "demo: certificates done in " << seconds_since(start) << " s, cached in " << certificate_path << '\n';
+    assets.certificate_seconds = seconds_since(start);
+    progress << "demo: certificates done in " << assets.certificate_seconds << " s, cached in " << certificate_path
+             << '\n';
   }
   return assets;
 }

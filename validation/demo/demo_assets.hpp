@@ -17,10 +17,14 @@ namespace sscc::validation {
 struct DemoAssetOptions {
   std::string mesh;            ///< a mesh file, or "" for the generated or default one
   std::string generated_mesh;  ///< "spring": the double-helix spring; "": data/bunny15k.off
-  std::string basis;           ///< a modal .U file (weights beside it); "" : computed and cached
+  std::string basis;           ///< a .U file (weights beside it); "" : computed and cached
+  /// What to compute when no basis file is given: "modal" (modal analysis, r modes) or
+  /// "polynomial" (the first r polynomial modes, stiffness-scaled).
+  std::string basis_kind = "modal";
   int modes = 30;
   ElasticMaterial material;
   std::string cache_dir;
+  bool fresh_certificates = false;  ///< precompute even when the cached file is valid
 };
 
 struct DemoAssets {
@@ -28,6 +32,8 @@ struct DemoAssets {
   std::unique_ptr<SubspaceModel> model;
   std::unique_ptr<SubspaceBvh> bvh;
   std::unique_ptr<Certificates> certificates;
+  double basis_seconds = 0.0;        ///< 0 when read from the cache or a file
+  double certificate_seconds = 0.0;  ///< 0 when read from the cache
 };
 
 DemoAssets load_demo_assets(const DemoAssetOptions& options, std::ostream& progress);

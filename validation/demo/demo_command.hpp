@@ -6,36 +6,18 @@
 // (mean milliseconds per step for the whole scene). The modal basis and the certificates
 // are computed on first run and cached.
 //
-// Scenes: "bunnies" (ear_drop.hpp: a 15k-triangle bunny shipped in data/, dropped and
-// struck) and "spring" (spring_scene.hpp: a double-helix spring compressed and released).
+// Scenes: scene_run.hpp.
 #pragma once
 
-#include <cstdint>
-#include <optional>
 #include <ostream>
 #include <string>
 
-#include "sscc/basis/linear_elasticity.hpp"
+#include "demo/scene_run.hpp"
 
 namespace sscc::validation {
 
 struct DemoOptions {
-  std::string scene = "bunnies";
-  std::string mesh;       ///< "" : the scene's default (data/bunny15k.off, or the generated spring)
-  std::string basis;      ///< a modal .U file (with its .weights); "" : modal analysis, cached
-  int modes = 0;          ///< 0: the scene's default (30 bunnies, 20 spring)
-  int objects = 0;        ///< 0: the scene's default (16 bunnies, 1 spring)
-  int steps = 300;
-  double dt = 0.01;       ///< s
-  /// Overrides of the scene's defaults. Bunnies: stiff rubber (E = 2e7 Pa, nu = 0.4,
-  /// 1100 kg/m^3, damping ratio 0.1: rubber damps its vibrations strongly); spring: steel
-  /// (2e11 Pa, 0.3, 7800 kg/m^3, 0.02). With the scenes' impulses, the bunnies' ears and the
-  /// spring's coils meet now and then, and most steps stay within the certificates.
-  std::optional<double> damping_ratio;
-  std::optional<double> youngs_modulus, poisson_ratio, density;
-  int fcl_steps = 4;      ///< steps on which FCL's self-collision runs too (0: none)
-  std::uint64_t seed = 1;
-  std::string cache_dir = "demo-cache";
+  SceneRunOptions run;
   std::string output_dir = "demo-output";
 };
 
