@@ -27,12 +27,9 @@ struct Grid {
 };
 
 Grid make_grid(const TriangleMesh& mesh, int resolution) {
-  Eigen::Vector3d lo = mesh.vertices()[0];
-  Eigen::Vector3d hi = lo;
-  for (const auto& p : mesh.vertices()) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const Aabb box = mesh.bounding_box();
+  const Eigen::Vector3d& lo = box.lo;
+  const Eigen::Vector3d& hi = box.hi;
   Grid grid;
   grid.cell = (hi - lo).maxCoeff() / resolution;
   if (!(grid.cell > 0.0)) throw std::invalid_argument("voxelize_surface: the mesh has no extent");

@@ -134,19 +134,17 @@ void SubspaceBvh::compute_bounds(int n) {
   }
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  Eigen::Vector3d lo = mesh.vertices()[vertices[0]];
-  Eigen::Vector3d hi = lo;
+  Aabb rest = Aabb::empty();
   double* mean = &mean_modes_[static_cast<std::size_t>(n) * 3 * r];
   for (int v : vertices) {
-    lo = lo.cwiseMin(mesh.vertices()[v]);
-    hi = hi.cwiseMax(mesh.vertices()[v]);
+    rest.add(mesh.vertices()[v]);
     for (int k = 0; k < 3; ++k) {
       for (int j = 0; j < r; ++j) mean[k * r + j] += model_.scaled_basis()(3 * v + k, j);
     }
   }
   for (int i = 0; i < 3 * r; ++i) mean[i] /= static_cast<double>(vertices.size());
-  centre_[n] = 0.5 * (lo + hi);
-  half_[n] = 0.5 * (hi - lo);
+  centre_[n] = 0.5 * (rest.lo + rest.hi);
+  half_[n] = 0.5 * (rest.hi - rest.lo);
   rate_[n].setZero();
   for (int v : vertices) {
     for (int k = 0; k < 3; ++k) {

@@ -67,15 +67,16 @@ TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Tr
   for (std::size_t e = 0; e < edges_.size(); ++e) edge_triangle_offsets_[e + 1] += edge_triangle_offsets_[e];
 }
 
+Aabb TriangleMesh::bounding_box() const {
+  Aabb box = Aabb::empty();
+  for (const auto& v : vertices_) box.add(v);
+  return box;
+}
+
 double TriangleMesh::bounding_box_diagonal() const {
   if (vertices_.empty()) return 0.0;
-  Eigen::Vector3d lo = vertices_[0];
-  Eigen::Vector3d hi = vertices_[0];
-  for (const auto& v : vertices_) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
-  }
-  return (hi - lo).norm();
+  const Aabb box = bounding_box();
+  return (box.hi - box.lo).norm();
 }
 
 }  // namespace sscc

@@ -21,12 +21,9 @@ PolynomialFrame frame_of(const TriangleMesh& mesh, int modes) {
                                 std::to_string(kMaxPolynomialModes));
   }
   if (mesh.vertex_count() == 0) throw std::invalid_argument("polynomial_basis: the mesh has no vertices");
-  Eigen::Vector3d lo = mesh.vertices()[0];
-  Eigen::Vector3d hi = lo;
-  for (const auto& p : mesh.vertices()) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const Aabb box = mesh.bounding_box();
+  const Eigen::Vector3d& lo = box.lo;
+  const Eigen::Vector3d& hi = box.hi;
   PolynomialFrame frame;
   frame.diagonal = (hi - lo).norm();
   if (!(frame.diagonal > 0.0)) throw std::invalid_argument("polynomial_basis: the mesh has no extent");

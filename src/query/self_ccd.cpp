@@ -316,16 +316,10 @@ class Traversal {
     const SubspaceBvh::Node& na = bvh_.nodes()[a];
     const SubspaceBvh::Node& nb = bvh_.nodes()[b];
     if (na.is_leaf() && nb.is_leaf()) {
-      // Only the triangles of each leaf that meet the other leaf's box.
-      std::array<int, kMaxLeafTriangles> from_b;
-      int count_b = 0;
-      for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) {
-        if (context_.triangle_meets_node(j, a)) from_b[count_b++] = j;
-      }
-      for (int i = na.triangle_begin; i < na.triangle_end && count_b > 0; ++i) {
-        if (!context_.triangle_meets_node(i, b)) continue;
-        for (int k = 0; k < count_b; ++k) context_.test_triangle_pair(i, from_b[k]);
-      }
+      detail::for_each_pruned_leaf_pair(
+          na, nb, [&](int i) { return context_.triangle_meets_node(i, b); },
+          [&](int j) { return context_.triangle_meets_node(j, a); },
+          [&](int i, int j) { context_.test_triangle_pair(i, j); });
       return;
     }
     // Descend the node with more triangles (a leaf never descends).

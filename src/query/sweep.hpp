@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -53,10 +54,7 @@ struct Sweep {
   Aabb start, end;
 
   /// The empty sweep, neutral for merge().
-  static Sweep empty() {
-    const Aabb none{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
-    return {none, none};
-  }
+  static Sweep empty() { return {Aabb::empty(), Aabb::empty()}; }
   void merge(const Sweep& part) {
     start = hull(start, part.start);
     end = hull(end, part.end);
@@ -93,6 +91,23 @@ inline bool apart_in_common_frame(const Sweep& a, const Sweep& b) {
 /// Whether two sweeps may touch: their step boxes overlap, also in their common frame.
 inline bool sweeps_may_touch(const Sweep& a, const Sweep& b) {
   return swept_overlap(a, b) && !apart_in_common_frame(a, b);
+}
+
+/// Calls test(i, j) for the triangle pairs of leaves a and b (positions in the hierarchy's
+/// order) where each triangle meets the other leaf: a_meets(i) for a's triangles,
+/// b_meets(j) for b's.
+template <typename AMeets, typename BMeets, typename Test>
+void for_each_pruned_leaf_pair(const SubspaceBvh::Node& a, const SubspaceBvh::Node& b, AMeets a_meets, BMeets b_meets,
+                               Test test) {
+  std::array<int, kMaxLeafTriangles> from_b;
+  int count_b = 0;
+  for (int j = b.triangle_begin; j < b.triangle_end; ++j) {
+    if (b_meets(j)) from_b[count_b++] = j;
+  }
+  for (int i = a.triangle_begin; i < a.triangle_end && count_b > 0; ++i) {
+    if (!a_meets(i)) continue;
+    for (int k = 0; k < count_b; ++k) test(i, from_b[k]);
+  }
 }
 
 }  // namespace sscc::detail

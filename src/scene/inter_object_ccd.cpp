@@ -50,15 +50,10 @@ void InterObjectCcd::traverse(int node_a, int node_b) {
   const SubspaceBvh::Node& na = a_.bvh().nodes()[node_a];
   const SubspaceBvh::Node& nb = b_.bvh().nodes()[node_b];
   if (na.is_leaf() && nb.is_leaf()) {
-    std::array<int, kMaxLeafTriangles> from_b;
-    int count_b = 0;
-    for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) {
-      if (swept_overlap(b_.triangle_sweep(j), a_.node_sweep(node_a))) from_b[count_b++] = j;
-    }
-    for (int i = na.triangle_begin; i < na.triangle_end && count_b > 0; ++i) {
-      if (!swept_overlap(a_.triangle_sweep(i), b_.node_sweep(node_b))) continue;
-      for (int k = 0; k < count_b; ++k) test_triangle_pair(i, from_b[k]);
-    }
+    for_each_pruned_leaf_pair(
+        na, nb, [&](int i) { return swept_overlap(a_.triangle_sweep(i), b_.node_sweep(node_b)); },
+        [&](int j) { return swept_overlap(b_.triangle_sweep(j), a_.node_sweep(node_a)); },
+        [&](int i, int j) { test_triangle_pair(i, j); });
     return;
   }
   const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >=

@@ -70,7 +70,7 @@ TEST_CASE("demo scenes: seeded, rigid frames, impacts and strikes excite the mod
   const sscc::ElasticBasis modal = sscc::modal_basis(box, options);
   const sscc::SubspaceModel model(box, modal.basis, modal.weights);
   sscc::validation::EarDropOptions drop_options;
-  drop_options.objects = 3;
+  drop_options.motion.objects = 3;
   drop_options.drop_height_max = 0.3;
   sscc::validation::EarDrop a(model, 300.0, drop_options), b(model, 300.0, drop_options);
   double largest = 0.0;

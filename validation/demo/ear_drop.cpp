@@ -27,10 +27,11 @@ double enclosed_volume(const TriangleMesh& mesh) {
 }
 
 EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& options)
-    : model_(model), mass_(mass), options_(options), rng_(options.seed) {
+    : model_(model), mass_(mass), options_(options), rng_(options.motion.seed) {
   const TriangleMesh& mesh = model.mesh();
-  Eigen::Vector3d lo = mesh.vertices()[0], hi = lo;
-  for (const auto& p : mesh.vertices()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const Aabb box = mesh.bounding_box();
+  const Eigen::Vector3d& lo = box.lo;
+  const Eigen::Vector3d& hi = box.hi;
   lowest_ = lo.y();
   const double height = hi.y() - lo.y();
   for (int v = 0; v < mesh.vertex_count(); ++v) {
@@ -39,11 +40,11 @@ EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& 
     if (y >= lo.y() + 0.5 * height) upper_.push_back(v);
   }
   const Eigen::VectorXd omega_squared = 2.0 * model.weights();
-  const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(options.objects))));
+  const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(options.motion.objects))));
   const double pitch = options.spacing * (hi - lo).maxCoeff();
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  for (int i = 0; i < options.objects; ++i) {
-    Body body{ModalDynamics(omega_squared, options.damping_ratio, options.dt), {}, 0.0, false, 0.0};
+  for (int i = 0; i < options.motion.objects; ++i) {
+    Body body{ModalDynamics(omega_squared, options.motion.damping_ratio, options.motion.dt), {}, 0.0, false, 0.0};
     body.frame.rotation = Eigen::AngleAxisd(2 * M_PI * uniform(rng_), Eigen::Vector3d::UnitY()).toRotationMatrix();
     const double drop = options.drop_height_min + (options.drop_height_max - options.drop_height_min) * uniform(rng_);
     body.frame.translation = Eigen::Vector3d(pitch * (i % side), drop - lowest_, pitch * (i / side));
@@ -54,7 +55,7 @@ EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& 
 std::vector<ObjectStep> EarDrop::step() {
   std::vector<ObjectStep> steps(bodies_.size());
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const double dt = options_.dt;
+  const double dt = options_.motion.dt;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];
     steps[i].q0 = b.modes.q();

@@ -20,9 +20,7 @@
 namespace sscc::validation {
 
 struct EarDropOptions {
-  int objects = 16;
-  double dt = 0.01;               ///< s
-  double damping_ratio = 0.01;
+  SceneMotionOptions motion{16, 0.01, 0.01, 1};
   double restitution = 0.4;
   double drop_height_min = 0.2;   ///< m, lowest point above the ground at release
   double drop_height_max = 1.5;
@@ -31,7 +29,6 @@ struct EarDropOptions {
   double strike_wait_max = 3.0;
   double spacing = 1.3;           ///< grid pitch, in units of the mesh's largest extent
   double gravity = 9.81;          ///< m/s^2
-  std::uint64_t seed = 1;
 };
 
 class EarDrop {

@@ -6,11 +6,21 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <vector>
 
 #include "sscc/model/subspace_model.hpp"
 
 namespace sscc::validation {
+
+/// What every demo scene's motion is made of: how many objects, the time step, the modes'
+/// damping, the seed of its random events.
+struct SceneMotionOptions {
+  int objects = 1;
+  double dt = 0.01;  ///< s
+  double damping_ratio = 0.01;
+  std::uint64_t seed = 1;
+};
 
 class ModalDynamics {
  public:

@@ -122,19 +122,14 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   const double damping = o.damping_ratio.value_or(p.damping_ratio);
   std::unique_ptr<EarDrop> drop;
   std::unique_ptr<SpringScene> spring;
+  const SceneMotionOptions motion{run.objects, o.dt, damping, o.seed};
   if (p.spring_motion) {
     SpringSceneOptions s;
-    s.objects = run.objects;
-    s.dt = o.dt;
-    s.damping_ratio = damping;
-    s.seed = o.seed;
+    s.motion = motion;
     spring = std::make_unique<SpringScene>(model, mass, s);
   } else {
     EarDropOptions d;
-    d.objects = run.objects;
-    d.dt = o.dt;
-    d.damping_ratio = damping;
-    d.seed = o.seed;
+    d.motion = motion;
     drop = std::make_unique<EarDrop>(model, mass, d);
   }
   const std::function<std::vector<ObjectStep>()> next = [&] { return spring ? spring->step() : drop->step(); };

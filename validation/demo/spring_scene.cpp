@@ -13,18 +13,19 @@ constexpr double kStrikeBand = 0.05;
 }  // namespace
 
 SpringScene::SpringScene(const SubspaceModel& model, double mass, const SpringSceneOptions& options)
-    : model_(model), mass_(mass), options_(options), rng_(options.seed) {
+    : model_(model), mass_(mass), options_(options), rng_(options.motion.seed) {
   const TriangleMesh& mesh = model.mesh();
-  Eigen::Vector3d lo = mesh.vertices()[0], hi = lo;
-  for (const auto& p : mesh.vertices()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const Aabb box = mesh.bounding_box();
+  const Eigen::Vector3d& lo = box.lo;
+  const Eigen::Vector3d& hi = box.hi;
   for (int v = 0; v < mesh.vertex_count(); ++v) {
     if (mesh.vertices()[v].z() >= hi.z() - kStrikeBand * (hi.z() - lo.z())) top_.push_back(v);
   }
   const Eigen::VectorXd omega_squared = 2.0 * model.weights();
   const double pitch = options.spacing * (hi - lo).maxCoeff();
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  for (int i = 0; i < options.objects; ++i) {
-    Spring s{ModalDynamics(omega_squared, options.damping_ratio, options.dt), {}, uniform(rng_) * 0.5};
+  for (int i = 0; i < options.motion.objects; ++i) {
+    Spring s{ModalDynamics(omega_squared, options.motion.damping_ratio, options.motion.dt), {}, uniform(rng_) * 0.5};
     s.frame.translation = Eigen::Vector3d(pitch * i, 0.0, 0.0);
     springs_.push_back(s);
   }
@@ -50,7 +51,7 @@ std::vector<ObjectStep> SpringScene::step() {
     s.modes.step();
     steps[i].q1 = s.modes.q();
   }
-  time_ += options_.dt;
+  time_ += options_.motion.dt;
   return steps;
 }
 

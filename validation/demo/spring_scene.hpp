@@ -17,14 +17,11 @@
 namespace sscc::validation {
 
 struct SpringSceneOptions {
-  int objects = 1;
-  double dt = 0.01;               ///< s
-  double damping_ratio = 0.01;
+  SceneMotionOptions motion;
   double strike_speed_min = 7.0;  ///< m/s
   double strike_speed_max = 12.0;
   double strike_interval = 2.5;   ///< s between strikes of one spring
   double spacing = 1.3;           ///< side-by-side pitch, in units of the spring's largest extent
-  std::uint64_t seed = 1;
 };
 
 class SpringScene {

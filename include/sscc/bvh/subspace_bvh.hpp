@@ -22,23 +22,13 @@
 #include <string>
 #include <vector>
 
+#include "sscc/geometry/aabb.hpp"
 #include "sscc/model/subspace_model.hpp"
 
 namespace sscc {
 
 inline constexpr int kBranchingFactor = 4;
 inline constexpr int kMaxLeafTriangles = 4;
-
-struct Aabb {
-  Eigen::Vector3d lo;
-  Eigen::Vector3d hi;
-  bool overlaps(const Aabb& o) const {
-    return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all();
-  }
-  bool contains(const Eigen::Vector3d& p) const {
-    return (lo.array() <= p.array()).all() && (p.array() <= hi.array()).all();
-  }
-};
 
 struct BvhBuildStats {
   int nodes = 0;

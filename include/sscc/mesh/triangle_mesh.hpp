@@ -8,6 +8,8 @@
 #include <array>
 #include <vector>
 
+#include "sscc/geometry/aabb.hpp"
+
 namespace sscc {
 
 using Triangle = std::array<int, 3>;  ///< vertex indices
@@ -41,7 +43,9 @@ class TriangleMesh {
     return ((x[0] == y[0]) | (x[0] == y[1]) | (x[0] == y[2])) | ((x[1] == y[0]) | (x[1] == y[1]) | (x[1] == y[2])) |
            ((x[2] == y[0]) | (x[2] == y[1]) | (x[2] == y[2]));
   }
-  /// Length of the diagonal of the rest positions' bounding box.
+  /// The rest positions' bounding box (empty for no vertices).
+  Aabb bounding_box() const;
+  /// Length of the diagonal of the rest positions' bounding box (0 for no vertices).
   double bounding_box_diagonal() const;
 
  private:
