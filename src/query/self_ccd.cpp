@@ -57,6 +57,7 @@ class StepContext {
         q_hat0_(q_hat0),
         q_hat1_(q_hat1),
         s_(s),
+        separation_(options.kernel.minimum_separation),
         norm0_(q_hat0.stableNorm()),
         norm1_(q_hat1.stableNorm()),
         x0_(mesh_.vertex_count()),
@@ -83,9 +84,9 @@ class StepContext {
     ++stats_.box_tests;
     if (options_.bounds == NodeBounds::kSubspace) {
       const auto swept = [&](int n) { return bvh_.swept_box(n, q_hat0_, q_hat1_, s_); };
-      return overlap(subspace_boxes_.get(a, swept), subspace_boxes_.get(b, swept));
+      return overlap(subspace_boxes_.get(a, swept), subspace_boxes_.get(b, swept), separation_);
     }
-    return sweeps_may_touch(node_sweep(a), node_sweep(b));
+    return sweeps_may_touch(node_sweep(a), node_sweep(b), separation_);
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
@@ -94,7 +95,7 @@ class StepContext {
   /// the cheap test that prunes a leaf pair's triangle loops.
   bool triangle_meets_node(int i, int n) {
     if (options_.bounds == NodeBounds::kSubspace) return true;
-    return swept_overlap(triangle_sweep(i), node_sweep(n));
+    return swept_overlap(triangle_sweep(i), node_sweep(n), separation_);
   }
 
   /// Kernels on the features of a non-adjacent triangle pair whose swept boxes meet. Each
@@ -106,15 +107,15 @@ class StepContext {
     if (stop_) return;
     const int a = bvh_.triangle_order()[i];
     const int b = bvh_.triangle_order()[j];
-    if (mesh_.adjacent(a, b) || !sweeps_may_touch(triangle_sweep(i), triangle_sweep(j))) return;
+    if (mesh_.adjacent(a, b) || !sweeps_may_touch(triangle_sweep(i), triangle_sweep(j), separation_)) return;
     ++stats_.triangle_pairs;
     const Aabb box_a = hull(triangle_sweep(i).start, triangle_sweep(i).end);
     const Aabb box_b = hull(triangle_sweep(j).start, triangle_sweep(j).end);
     const Triangle& ta = mesh_.triangles()[a];
     const Triangle& tb = mesh_.triangles()[b];
     for (int i = 0; i < 3; ++i) {
-      if (overlap(point_box(ta[i]), box_b) && owns_vertex_face(a, ta[i], b)) vertex_face(ta[i], b);
-      if (overlap(point_box(tb[i]), box_a) && owns_vertex_face(b, tb[i], a)) vertex_face(tb[i], a);
+      if (overlap(point_box(ta[i]), box_b, separation_) && owns_vertex_face(a, ta[i], b)) vertex_face(ta[i], b);
+      if (overlap(point_box(tb[i]), box_a, separation_) && owns_vertex_face(b, tb[i], a)) vertex_face(tb[i], a);
     }
     std::array<Aabb, 3> edges_b;
     for (int j = 0; j < 3; ++j) edges_b[j] = edge_box(mesh_.triangle_edges(b)[j]);
@@ -122,10 +123,10 @@ class StepContext {
     for (int i = 0; i < 3; ++i) {
       const int e = mesh_.triangle_edges(a)[i];
       const Aabb edge_a = edge_box(e);
-      if (!overlap(edge_a, box_b)) continue;
+      if (!overlap(edge_a, box_b, separation_)) continue;
       for (int j = 0; j < 3; ++j) {
         const int g = mesh_.triangle_edges(b)[j];
-        if (overlap(edge_a, edges_b[j]) && owns_edge_edge(pair, e, g)) edge_edge(e, g);
+        if (overlap(edge_a, edges_b[j], separation_) && owns_edge_edge(pair, e, g)) edge_edge(e, g);
       }
     }
   }
@@ -264,7 +265,9 @@ class StepContext {
   const TriangleMesh& mesh_;
   const SelfCcdOptions& options_;
   Eigen::VectorXd q_hat0_, q_hat1_;
-  double s_, norm0_, norm1_;
+  double s_;
+  double separation_;  // every cull widened by the kernels' minimum separation
+  double norm0_, norm1_;
   std::vector<Eigen::Vector3d> x0_, x1_;
   std::vector<char> computed_;
   LazyBoxes<Aabb> subspace_boxes_;

@@ -42,9 +42,25 @@ class LazyBoxes {
   std::vector<char> known_;
 };
 
-inline bool overlap(const Aabb& a, const Aabb& b) {
-  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
-         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+/// Relative slack on a gap compared with a minimum separation d > 0: the gap's subtraction
+/// rounds (relative error 2^-53), so only a gap beyond d (1 + 1e-12) proves the distance
+/// exceeds d. Smaller could cull a pair exactly d apart; larger only culls less.
+inline constexpr double kSeparationSlack = 1.0 + 1e-12;
+
+/// Whether the intervals [a_lo, a_hi] and [b_lo, b_hi] stay farther apart than d (d = 0:
+/// disjoint; touching intervals are not apart). Every cull of the queries is a set of such
+/// tests, so a minimum separation widens them all.
+inline bool apart(double a_lo, double a_hi, double b_lo, double b_hi, double d) {
+  if (d == 0.0) return a_hi < b_lo || b_hi < a_lo;
+  return b_lo - a_hi > d * kSeparationSlack || a_lo - b_hi > d * kSeparationSlack;
+}
+
+/// Whether two boxes come within d of each other along every axis.
+inline bool overlap(const Aabb& a, const Aabb& b, double d) {
+  for (int k = 0; k < 3; ++k) {
+    if (apart(a.lo[k], a.hi[k], b.lo[k], b.hi[k], d)) return false;
+  }
+  return true;
 }
 inline Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
 
@@ -65,32 +81,34 @@ struct Sweep {
   double motion(int k) const { return 0.5 * ((end.lo[k] + end.hi[k]) - (start.lo[k] + start.hi[k])); }
 };
 
-/// Whether the boxes of the whole step overlap.
-inline bool swept_overlap(const Sweep& a, const Sweep& b) {
+/// Whether the boxes of the whole step come within d.
+inline bool swept_overlap(const Sweep& a, const Sweep& b, double d) {
   for (int k = 0; k < 3; ++k) {
-    if (a.swept_hi(k) < b.swept_lo(k) || b.swept_hi(k) < a.swept_lo(k)) return false;
+    if (apart(a.swept_lo(k), a.swept_hi(k), b.swept_lo(k), b.swept_hi(k), d)) return false;
   }
   return true;
 }
 
-/// Contact is unchanged when one translation, linear in t, moves both objects: with their
-/// mean displacement taken out, neighbours that move alike sweep small boxes. Apart there
-/// means apart (the shifted ends bounded whatever the rounding: ccd/moving_frame.hpp).
-inline bool apart_in_common_frame(const Sweep& a, const Sweep& b) {
+/// Contact (and distance) is unchanged when one translation, linear in t, moves both
+/// objects: with their mean displacement taken out, neighbours that move alike sweep small
+/// boxes. Farther than d apart there means farther than d apart (the shifted ends bounded
+/// whatever the rounding: ccd/moving_frame.hpp).
+inline bool apart_in_common_frame(const Sweep& a, const Sweep& b, double d) {
   for (int k = 0; k < 3; ++k) {
     const double common = 0.5 * (a.motion(k) + b.motion(k));
     const double a_lo = std::min(a.start.lo[k], ccd::shifted_lower(a.end.lo[k], common));
     const double a_hi = std::max(a.start.hi[k], ccd::shifted_upper(a.end.hi[k], common));
     const double b_lo = std::min(b.start.lo[k], ccd::shifted_lower(b.end.lo[k], common));
     const double b_hi = std::max(b.start.hi[k], ccd::shifted_upper(b.end.hi[k], common));
-    if (a_hi < b_lo || b_hi < a_lo) return true;
+    if (apart(a_lo, a_hi, b_lo, b_hi, d)) return true;
   }
   return false;
 }
 
-/// Whether two sweeps may touch: their step boxes overlap, also in their common frame.
-inline bool sweeps_may_touch(const Sweep& a, const Sweep& b) {
-  return swept_overlap(a, b) && !apart_in_common_frame(a, b);
+/// Whether two sweeps may come within d (0: touch): their step boxes do, also in their
+/// common frame.
+inline bool sweeps_may_touch(const Sweep& a, const Sweep& b, double d) {
+  return swept_overlap(a, b, d) && !apart_in_common_frame(a, b, d);
 }
 
 /// Calls test(i, j) for the triangle pairs of leaves a and b (positions in the hierarchy's

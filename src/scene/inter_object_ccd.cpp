@@ -30,7 +30,7 @@ InterObjectCcd::InterObjectCcd(ObjectMotion& a, int object_a, ObjectMotion& b, i
 
 bool InterObjectCcd::roots_meet() {
   ++box_tests_;
-  return sweeps_may_touch(a_.node_sweep(0), b_.node_sweep(0));
+  return sweeps_may_touch(a_.node_sweep(0), b_.node_sweep(0), separation());
 }
 
 void InterObjectCcd::run() { traverse(0, 0); }
@@ -46,13 +46,13 @@ void InterObjectCcd::run_exhaustive() {
 void InterObjectCcd::traverse(int node_a, int node_b) {
   if (stop_) return;
   ++box_tests_;
-  if (!sweeps_may_touch(a_.node_sweep(node_a), b_.node_sweep(node_b))) return;
+  if (!sweeps_may_touch(a_.node_sweep(node_a), b_.node_sweep(node_b), separation())) return;
   const SubspaceBvh::Node& na = a_.bvh().nodes()[node_a];
   const SubspaceBvh::Node& nb = b_.bvh().nodes()[node_b];
   if (na.is_leaf() && nb.is_leaf()) {
     for_each_pruned_leaf_pair(
-        na, nb, [&](int i) { return swept_overlap(a_.triangle_sweep(i), b_.node_sweep(node_b)); },
-        [&](int j) { return swept_overlap(b_.triangle_sweep(j), a_.node_sweep(node_a)); },
+        na, nb, [&](int i) { return swept_overlap(a_.triangle_sweep(i), b_.node_sweep(node_b), separation()); },
+        [&](int j) { return swept_overlap(b_.triangle_sweep(j), a_.node_sweep(node_a), separation()); },
         [&](int i, int j) { test_triangle_pair(i, j); });
     return;
   }
@@ -68,7 +68,7 @@ void InterObjectCcd::test_triangle_pair(int i, int j) {
   if (stop_) return;
   const Sweep& sweep_a = a_.triangle_sweep(i);
   const Sweep& sweep_b = b_.triangle_sweep(j);
-  if (!sweeps_may_touch(sweep_a, sweep_b)) return;
+  if (!sweeps_may_touch(sweep_a, sweep_b, separation())) return;
   ++triangle_pairs_;
   const int ta = a_.bvh().triangle_order()[i];
   const int tb = b_.bvh().triangle_order()[j];
@@ -78,18 +78,18 @@ void InterObjectCcd::test_triangle_pair(int i, int j) {
   const Aabb box_b = swept_box(sweep_b);
   for (int k = 0; k < 3; ++k) {
     const int v = mesh_a.triangles()[ta][k];
-    if (first_around_vertex(mesh_a, v, ta) && overlap(point_box(a_, v), box_b)) vertex_face(a_, object_a_, v, b_, object_b_, tb);
+    if (first_around_vertex(mesh_a, v, ta) && overlap(point_box(a_, v), box_b, separation())) vertex_face(a_, object_a_, v, b_, object_b_, tb);
     const int w = mesh_b.triangles()[tb][k];
-    if (first_around_vertex(mesh_b, w, tb) && overlap(point_box(b_, w), box_a)) vertex_face(b_, object_b_, w, a_, object_a_, ta);
+    if (first_around_vertex(mesh_b, w, tb) && overlap(point_box(b_, w), box_a, separation())) vertex_face(b_, object_b_, w, a_, object_a_, ta);
   }
   for (int k = 0; k < 3; ++k) {
     const int e = mesh_a.triangle_edges(ta)[k];
     if (!first_around_edge(mesh_a, e, ta)) continue;
     const Aabb box_e = edge_box(a_, e);
-    if (!overlap(box_e, box_b)) continue;
+    if (!overlap(box_e, box_b, separation())) continue;
     for (int l = 0; l < 3; ++l) {
       const int g = mesh_b.triangle_edges(tb)[l];
-      if (first_around_edge(mesh_b, g, tb) && overlap(box_e, edge_box(b_, g))) edge_edge(e, g);
+      if (first_around_edge(mesh_b, g, tb) && overlap(box_e, edge_box(b_, g), separation())) edge_edge(e, g);
     }
   }
 }

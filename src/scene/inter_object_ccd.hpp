@@ -33,6 +33,8 @@ class InterObjectCcd {
   long kernel_calls() const { return kernel_calls_; }
 
  private:
+  /// Every cull is widened by the kernels' minimum separation.
+  double separation() const { return options_.kernel.minimum_separation; }
   void traverse(int node_a, int node_b);
   void test_triangle_pair(int i, int j);
   void vertex_face(ObjectMotion& vertex_side, int object_v, int v, ObjectMotion& face_side, int object_f, int f);

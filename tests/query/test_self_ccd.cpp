@@ -13,7 +13,8 @@
 namespace {
 
 struct Fixture {
-  sscc::TriangleMesh mesh = sscc::test::uv_sphere(10, 20);
+  explicit Fixture(int rings = 10, int segments = 20) : mesh(sscc::test::uv_sphere(rings, segments)) {}
+  sscc::TriangleMesh mesh;
   sscc::SubspaceModel model{mesh, sscc::polynomial_basis(mesh, 27), Eigen::VectorXd::Ones(27)};
   sscc::SubspaceBvh bvh{model};
   sscc::SelfCcd ccd{bvh};
@@ -29,7 +30,7 @@ Eigen::VectorXd random_q(std::mt19937_64& rng, double amplitude) {
 /// Independent of the library's leaf code: every non-adjacent triangle pair, all 15 features
 /// through the kernels directly, the earliest time per pair.
 std::vector<sscc::TrianglePairContact> brute_force(const Fixture& f, const Eigen::VectorXd& q0,
-                                                   const Eigen::VectorXd& q1) {
+                                                   const Eigen::VectorXd& q1, const sscc::ccd::CcdOptions& options = {}) {
   const std::vector<Eigen::Vector3d> x0 = f.model.deformed_positions(q0);
   const std::vector<Eigen::Vector3d> x1 = f.model.deformed_positions(q1);
   std::vector<sscc::TrianglePairContact> pairs;
@@ -37,7 +38,7 @@ std::vector<sscc::TrianglePairContact> brute_force(const Fixture& f, const Eigen
     for (int b = a + 1; b < f.mesh.triangle_count(); ++b) {
       if (f.mesh.adjacent(a, b)) continue;
       const double earliest =
-          sscc::validation::triangle_pair_first_contact(x0, x1, f.mesh.triangles()[a], f.mesh.triangles()[b]);
+          sscc::validation::triangle_pair_first_contact(x0, x1, f.mesh.triangles()[a], f.mesh.triangles()[b], options);
       if (earliest <= 1.0) pairs.push_back({a, b, earliest});
     }
   }
@@ -239,4 +240,43 @@ TEST_CASE("self-CCD on given positions: wrong counts and non-finite coordinates 
   bad[5][1] = std::numeric_limits<double>::infinity();
   CHECK_THROWS_WITH(f.ccd.query_positions(bad, x), Catch::Contains("vertex 5"));
   CHECK_FALSE(f.ccd.query_positions(x, x).collided());
+}
+
+TEST_CASE("self-CCD with a minimum separation: every cull widened, pairs as brute force finds them", "[query]") {
+  // Two parallel triangles: the top one comes down to 0.5 above the bottom one, never
+  // touching; with d = 1 they are a pair.
+  const sscc::TriangleMesh two({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 2}, {1, 0, 2}, {0, 1, 2}},
+                               {{0, 1, 2}, {3, 4, 5}});
+  Eigen::MatrixXd down = Eigen::MatrixXd::Zero(18, 1);
+  for (int v = 3; v < 6; ++v) down(3 * v + 2, 0) = -1.0;
+  const sscc::SubspaceModel model(two, down, Eigen::VectorXd::Ones(1));
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd ccd(bvh);
+  sscc::SelfCcdOptions thick;
+  thick.kernel.minimum_separation = 1.0;
+  for (auto bounds : {sscc::NodeBounds::kHybrid, sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
+    thick.bounds = bounds;
+    CHECK(ccd.query(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 1.5), thick).collided());
+    CHECK_FALSE(ccd.query(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 0.9), thick).collided());
+  }
+  CHECK(ccd.query_exhaustive(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 1.5), thick).collided());
+
+  const Fixture f(5, 8);  // small: the separation kernels are slow and brute force is O(N^2)
+  std::mt19937_64 rng(31);
+  int thick_only = 0;
+  for (int step = 0; step < 3; ++step) {
+    const Eigen::VectorXd q0 = random_q(rng, 0.3);
+    const Eigen::VectorXd q1 = q0 + random_q(rng, 0.3);
+    sscc::SelfCcdOptions options;
+    options.kernel.minimum_separation = 0.005;
+    const auto expected = brute_force(f, q0, q1, options.kernel);
+    const auto found = f.ccd.query(q0, q1, options).pairs;
+    REQUIRE(found.size() == expected.size());
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      CHECK(found[i].first == expected[i].first);
+      CHECK(found[i].second == expected[i].second);
+    }
+    thick_only += found.size() > f.ccd.query(q0, q1).pairs.size();
+  }
+  CHECK(thick_only >= 1);
 }

@@ -225,3 +225,24 @@ TEST_CASE("scene: per-object switches, bad input, concurrent steps", "[scene]") 
   bad[0].q1 = Eigen::VectorXd::Zero(2);
   CHECK_THROWS_WITH(scene.step(bad), Catch::Contains("object 0"));
 }
+
+TEST_CASE("scene: a minimum separation widens the inter-object culls", "[scene]") {
+  const sscc::TriangleMesh one({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+  const sscc::SubspaceModel model(one, Eigen::MatrixXd::Zero(9, 1), Eigen::VectorXd::Ones(1));
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd ccd(bvh);
+  sscc::Scene scene;
+  scene.add_object(ccd);
+  scene.add_object(ccd);
+  std::vector<sscc::ObjectStep> steps(2);
+  for (auto& s : steps) s.q0 = s.q1 = Eigen::VectorXd::Zero(1);
+  steps[1].frame0.translation = Eigen::Vector3d(0, 0, 2);
+  steps[1].frame1.translation = Eigen::Vector3d(0, 0, 0.5);  // comes within 0.5, never touches
+  sscc::SceneOptions thick;
+  thick.kernel.minimum_separation = 1.0;
+  CHECK(scene.step(steps, thick).contacts.size() == 1);
+  CHECK(scene.inter_object_exhaustive(steps, thick).size() == 1);
+  CHECK(scene.step(steps).contacts.empty());
+  thick.kernel.minimum_separation = 0.4;
+  CHECK(scene.step(steps, thick).contacts.empty());
+}

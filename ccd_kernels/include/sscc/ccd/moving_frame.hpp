@@ -11,7 +11,7 @@
 
 namespace sscc::ccd {
 
-/// Relative widening of a shifted coordinate, 2^-51 (four units in the last place): it
+/// Relative widening of a shifted coordinate, 2^-51 (4u for the unit roundoff u = 2^-53): it
 /// covers the rounding of x - c (at most 2^-53 |x - c|) and of the widening itself. Smaller
 /// values could cut a touching pair apart by an ulp; larger ones only cull less.
 inline constexpr double kShiftRoundingMargin = 0x1p-51;
