@@ -2,6 +2,9 @@
 // This umbrella header includes the public API.
 #pragma once
 
+#include "sscc/basis/example_pose_generator.hpp"
+#include "sscc/basis/example_poses.hpp"
+#include "sscc/basis/key_points.hpp"
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/ccd/ccd_types.hpp"
 #include "sscc/ccd/kernels.hpp"
@@ -10,6 +13,7 @@
 #include "sscc/geometry/triangle_distance.hpp"
 #include "sscc/mesh/mesh_io.hpp"
 #include "sscc/mesh/triangle_mesh.hpp"
+#include "sscc/mesh/write_off.hpp"
 #include "sscc/model/basis_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/model/subspace_model.hpp"
