@@ -17,4 +17,5 @@
 #include "sscc/model/basis_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/model/subspace_model.hpp"
+#include "sscc/query/pose_step_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
