@@ -17,5 +17,8 @@
 #include "sscc/model/basis_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/model/subspace_model.hpp"
+#include "sscc/prediction/cull_validation.hpp"
+#include "sscc/prediction/culling_predictor.hpp"
+#include "sscc/prediction/node_collisions.hpp"
 #include "sscc/query/pose_step_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
