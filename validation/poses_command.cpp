@@ -9,6 +9,7 @@
 #include "sscc/mesh/mesh_io.hpp"
 #include "sscc/prediction/cull_validation.hpp"
 #include "sscc/prediction/node_collisions.hpp"
+#include "sscc/query/pose_step_ccd.hpp"
 
 namespace sscc::validation {
 
@@ -35,6 +36,26 @@ std::vector<std::vector<char>> ground_truth(const SubspaceBvh& bvh, const std::v
   std::vector<std::vector<char>> truth;
   for (const Eigen::VectorXd& pose : q) truth.push_back(colliding_nodes(bvh, pose));
   return truth;
+}
+
+/// Steps from the mean shape to each pose (given positions) through the pose-step query:
+/// how many fell back to the traditional query and how many collided.
+struct PoseSteps {
+  int steps = 0;
+  int fell_back = 0;
+  int collided = 0;
+};
+
+PoseSteps steps_from_mean(const PoseStepCcd& steps, const PoseSubspace& subspace,
+                          const std::vector<Eigen::VectorXd>& poses) {
+  PoseSteps result;
+  for (const Eigen::VectorXd& pose : poses) {
+    const PoseStepReport report = steps.query(subspace.mean_shape().vertices(), unstack_positions(pose));
+    ++result.steps;
+    result.fell_back += report.fell_back;
+    result.collided += report.ccd.collided();
+  }
+  return result;
 }
 
 void print_counts(std::ostream& out, const char* label, const CullCounts& c) {
@@ -105,6 +126,16 @@ long run_poses(const PosesCommandOptions& o, std::ostream& out, std::ostream& pr
   const CullValidation on_training = validate_culling(bvh, certificates, predictor, training_q, training_truth);
   const CullValidation on_held_out = validate_culling(bvh, certificates, predictor, held_out_q, held_out_truth);
 
+  progress << "pose steps: from the mean shape to each held-out pose and to its key-point reconstruction\n";
+  const PoseStepCcd steps(subspace, bvh, &certificates);
+  std::vector<Eigen::VectorXd> given, reconstructed;
+  for (Eigen::Index p = 0; p < held_out.cols(); ++p) {
+    given.push_back(held_out.col(p));
+    reconstructed.push_back(subspace.reconstruct(held_out_q[p]));
+  }
+  const PoseSteps to_given = steps_from_mean(steps, subspace, given);
+  const PoseSteps to_reconstructed = steps_from_mean(steps, subspace, reconstructed);
+
   char line[512];
   std::snprintf(line, sizeof line, "poses: mesh=%s vertices=%d triangles=%d training=%d held_out=%d seed=%llu",
                 o.mesh.c_str(), mesh.vertex_count(), mesh.triangle_count(), o.training, o.held_out,
@@ -128,6 +159,13 @@ long run_poses(const PosesCommandOptions& o, std::ostream& out, std::ostream& pr
   std::snprintf(line, sizeof line, "certificates: nodes=%d root_radius=%.6g global_radius=%.6g precompute_s=%.3f",
                 certificates.node_count(), certificates.node_radius(0), certificates.global_radius(),
                 certificates.stats().seconds);
+  out << line << '\n';
+  std::snprintf(line, sizeof line,
+                "pose steps from the mean shape (fallback when a vertex residual > %.3g box diagonals): to the "
+                "held-out poses %d steps, %d fell back, %d collided; to their key-point reconstructions %d steps, "
+                "%d fell back, %d collided",
+                kSubspaceResidualFraction, to_given.steps, to_given.fell_back, to_given.collided,
+                to_reconstructed.steps, to_reconstructed.fell_back, to_reconstructed.collided);
   out << line << '\n';
   print_validation(out, "training", on_training);
   print_validation(out, "held-out", on_held_out);

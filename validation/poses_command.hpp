@@ -12,7 +12,10 @@
 //   5. the EXPERIMENTAL, NOT CONSERVATIVE regression predictor, fitted on the training
 //      poses' key-point coordinates against the exact discrete test;
 //   6. on the held-out poses (at their key-point coordinates, ground truth again the exact
-//      discrete test): culls and false culls of both, side by side.
+//      discrete test): culls and false culls of both, side by side;
+//   7. pose steps (pose_step_ccd.hpp) from the mean shape to each held-out pose as given
+//      (off the subspace: the traditional query) and to its key-point reconstruction (in
+//      it: certified).
 // The last line is
 //   poses: sound_false_culls=N experimental_false_culls=M (EXPERIMENTAL, NOT CONSERVATIVE) time_s=X
 #pragma once
