@@ -36,11 +36,6 @@ namespace sscc {
 /// whose contacts the certificates do not cover (see above); smaller ones send rounded
 /// in-subspace poses to the slow query.
 inline constexpr double kSubspaceResidualFraction = 1e-10;
-/// The model a PoseStepCcd is built on must be the subspace's: its rest positions the mean
-/// and its basis U up to the rounding of the weight scaling, entry by entry within this
-/// (U's entries are at most 1 in magnitude, and the scaling rounds each by a few units of
-/// 1e-16). Larger would accept a slightly different basis, whose certificates are not U's.
-inline constexpr double kModelBasisMatchTolerance = 1e-12;
 
 struct PoseStepOptions {
   SelfCcdOptions ccd;
@@ -59,6 +54,12 @@ struct PoseStepReport {
   /// is query(q0, q1), with the certificates when there are any.
   bool fell_back = false;
 };
+
+/// The model a PoseStepCcd is built on must be the subspace's: its rest positions the mean
+/// and its basis U up to the rounding of the weight scaling, entry by entry within this
+/// (U's entries are at most 1 in magnitude, and the scaling rounds each by a few units of
+/// 1e-16). Larger would accept a slightly different basis, whose certificates are not U's.
+inline constexpr double kModelBasisMatchTolerance = 1e-12;
 
 class PoseStepCcd {
  public:
