@@ -97,7 +97,10 @@ PoseSubspace::PoseSubspace(const TriangleMesh& reference, const Eigen::MatrixXd&
                                 std::to_string(count) + " poses have " + std::to_string(components) +
                                 " components (at most poses - 1)");
   }
-  if (kept == 0) {
+  if (kept == 0 && options.variance_fraction >= 1.0) {
+    // Not by the sum: the smallest variances no longer change it in floating point.
+    kept = components;
+  } else if (kept == 0) {
     const double total = component_variances_.sum();
     double explained = 0.0;
     while (kept < components && explained < options.variance_fraction * total) explained += component_variances_[kept++];

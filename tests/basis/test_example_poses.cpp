@@ -1,5 +1,9 @@
 #include <catch2/catch.hpp>
 
+#include <Eigen/QR>
+
+#include <cmath>
+#include <random>
 #include <string>
 
 #include "basis/pose_fixtures.hpp"
@@ -50,6 +54,30 @@ TEST_CASE("PCA with every component reproduces the training poses to round-off",
   CHECK(model.weighted_norm(q.col(0)) == Approx(std::sqrt((q.col(0).cwiseAbs2().cwiseQuotient(pca.variances())).sum())));
 }
 
+TEST_CASE("PCA with a fraction of 1 keeps components too small to change the variance's sum", "[pca]") {
+  // Poses along four orthogonal directions with spreads 1, 1e-3, 1e-6 and 1e-9: the last
+  // variance is 1e-18 of the first, below the sum's rounding, and still a component.
+  const sscc::TriangleMesh bar = sscc::test::pose_bar();
+  std::mt19937_64 rng(17);
+  std::normal_distribution<double> normal;
+  const Eigen::Index n = 3 * bar.vertex_count();
+  Eigen::MatrixXd random(n, 4);
+  for (Eigen::Index i = 0; i < random.size(); ++i) random.data()[i] = normal(rng);
+  const Eigen::MatrixXd directions = Eigen::HouseholderQR<Eigen::MatrixXd>(random).householderQ() *
+                                     Eigen::MatrixXd::Identity(n, 4);
+  Eigen::MatrixXd poses = sscc::stack_positions(bar.vertices()).replicate(1, 6);
+  for (int p = 0; p < 6; ++p) {
+    for (int i = 0; i < 4; ++i) poses.col(p) += 0.1 * std::pow(1e-3, i) * normal(rng) * directions.col(i);
+  }
+  const sscc::PoseSubspace pca(bar, poses, sscc::test::pca_fraction(1.0));
+  REQUIRE(pca.component_variances().size() == 4);
+  CHECK(pca.mode_count() == 4);
+  for (int p = 0; p < 6; ++p) {
+    const Eigen::VectorXd x = poses.col(p);
+    CHECK(pca.residual(x, pca.project(x)).max_vertex <= kRoundOff * bar.bounding_box_diagonal());
+  }
+}
+
 TEST_CASE("PCA keeps the fewest components reaching the explained variance, or the count given", "[pca]") {
   const sscc::TriangleMesh bar = sscc::test::pose_bar();
   const Eigen::MatrixXd poses = sscc::generate_example_poses(bar, sscc::test::bar_pose_options(20, 5));
@@ -68,6 +96,7 @@ TEST_CASE("PCA keeps the fewest components reaching the explained variance, or t
     previous = r;
   }
   CHECK(previous == complete.mode_count());
+  CHECK(complete.mode_count() == complete.component_variances().size());  // 1 keeps every component
   const sscc::PoseSubspace three(bar, poses, sscc::test::pca_modes(3));
   REQUIRE(three.mode_count() == 3);
   CHECK((three.basis() - complete.basis().leftCols(3)).cwiseAbs().maxCoeff() < kRoundOff);
