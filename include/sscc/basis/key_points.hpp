@@ -15,7 +15,9 @@
 // residual sum_p ||x_p - m - U q_p||^2, with q_p fitted to the key points alone. Because U
 // is orthonormal this is sum_p (||x_p - m - U c_p||^2 + ||c_p - q_p||^2) with c_p the
 // projection: the first term is the subspace's own error, the same for every key set, the
-// second what the key points add to it.
+// second what the key points add to it. An addition tries every vertex, each at the cost of
+// an r x r eigendecomposition and an r x P fit: O(V (r^3 + r^2 P)) per addition, in
+// parallel (OpenMP); the uniform sampling costs O(V k).
 #pragma once
 
 #include <Eigen/Core>
