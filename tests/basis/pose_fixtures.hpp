@@ -62,25 +62,30 @@ inline Eigen::VectorXd orthogonal_displacement(const PoseSubspace& subspace, std
   return e * (largest / max_vertex);
 }
 
-/// Bar poses, the PCA of the first `training` of them, its model, hierarchy and sound
-/// certificates (radii resolved up to 4 R_global: PCA weights count in standard deviations,
-/// and the poses reach a few).
-struct CertifiedPoses {
+/// Bar poses, the PCA of the first `training` of them, its model and hierarchy.
+struct PosePca {
   TriangleMesh bar = pose_bar();
   Eigen::MatrixXd poses;
   int training;
   PoseSubspace subspace;
   SubspaceModel model;
   SubspaceBvh bvh;
-  Certificates certificates;
 
-  CertifiedPoses(int count, int training_count, std::uint64_t seed, const PcaOptions& pca)
+  PosePca(int count, int training_count, std::uint64_t seed, const PcaOptions& pca)
       : poses(generate_example_poses(bar, bar_pose_options(count, seed))),
         training(training_count),
         subspace(bar, poses.leftCols(training_count), pca),
         model(subspace.model()),
-        bvh(model),
-        certificates(Certificates::precompute(bvh, [] {
+        bvh(model) {}
+};
+
+/// With the model's sound certificates, radii resolved up to 4 R_global (PCA weights count
+/// in standard deviations, and the poses reach a few).
+struct CertifiedPoses : PosePca {
+  Certificates certificates;
+
+  CertifiedPoses(int count, int training_count, std::uint64_t seed, const PcaOptions& pca)
+      : PosePca(count, training_count, seed, pca), certificates(Certificates::precompute(bvh, [] {
           CertificateParameters parameters;
           parameters.global_radius_scale = 4.0;
           return parameters;

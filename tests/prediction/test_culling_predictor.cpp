@@ -96,15 +96,17 @@ TEST_CASE("EXPERIMENTAL predicted culling: false culls counted beside the sound 
 }
 
 TEST_CASE("the culling predictor and its validation refuse inputs of the wrong shape", "[pca]") {
-  const CertifiedPoses f(8, 8, 3, sscc::test::pca_modes(2));
-  const std::vector<Eigen::VectorXd> q = {Eigen::VectorXd::Zero(2)};
+  const CertifiedPoses f(8, 8, 3, sscc::test::pca_modes(3));
+  const std::vector<Eigen::VectorXd> q = {Eigen::VectorXd::Zero(3)};
   const std::vector<std::vector<char>> truth = {std::vector<char>(f.bvh.nodes().size(), 0)};
   CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, {}, {}), Catch::Contains("no training poses"));
   CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, q, {}), Catch::Contains("ground truths"));
-  CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, {Eigen::VectorXd::Zero(3)}, truth), Catch::Contains("finite"));
+  CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, {Eigen::VectorXd::Zero(2)}, truth), Catch::Contains("finite"));
   CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, q, {std::vector<char>(2, 0)}), Catch::Contains("per node"));
   const sscc::CullingPredictor predictor = sscc::CullingPredictor::fit(f.bvh, q, truth);
   CHECK_THROWS_WITH(predictor.scores(Eigen::VectorXd::Zero(5)), Catch::Contains("finite coordinates"));
-  const CertifiedPoses other(8, 8, 4, sscc::test::pca_modes(2));
-  CHECK_THROWS(sscc::validate_culling(f.bvh, other.certificates, predictor, q, truth));
+  const sscc::SubspaceBvh other_tree(f.model, 2);  // another k-means seed: another hierarchy
+  CHECK_THROWS_WITH(sscc::validate_culling(other_tree, f.certificates, predictor, q, truth),
+                    Catch::Contains("another"));
+  CHECK_THROWS_WITH(sscc::validate_culling(f.bvh, f.certificates, predictor, q, {}), Catch::Contains("ground truths"));
 }

@@ -79,8 +79,8 @@ TEST_CASE("pose steps fall back to the traditional query exactly when a residual
 }
 
 TEST_CASE("pose steps refuse a model that is not the subspace's, and bad poses", "[pca]") {
-  const CertifiedPoses f(12, 12, 4, sscc::test::pca_modes(3));
-  const CertifiedPoses other(12, 12, 5, sscc::test::pca_modes(3));
+  const sscc::test::PosePca f(12, 12, 4, sscc::test::pca_modes(3));
+  const sscc::test::PosePca other(12, 12, 5, sscc::test::pca_modes(3));
   CHECK_THROWS_WITH(sscc::PoseStepCcd(f.subspace, other.bvh), Catch::Contains("mean shape"));
   const sscc::PoseSubspace fewer(f.bar, f.poses, sscc::test::pca_modes(2));
   CHECK_THROWS_WITH(sscc::PoseStepCcd(fewer, f.bvh), Catch::Contains("modes"));
