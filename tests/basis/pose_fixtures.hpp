@@ -79,15 +79,16 @@ struct PosePca {
         bvh(model) {}
 };
 
-/// With the model's sound certificates, radii resolved up to 4 R_global (PCA weights count
-/// in standard deviations, and the poses reach a few).
+/// With the model's sound certificates, radii resolved up to `global_scale` R_global (4 by
+/// default: PCA weights count in standard deviations, and the poses reach a few; the
+/// precomputation takes longer the larger it is).
 struct CertifiedPoses : PosePca {
   Certificates certificates;
 
-  CertifiedPoses(int count, int training_count, std::uint64_t seed, const PcaOptions& pca)
-      : PosePca(count, training_count, seed, pca), certificates(Certificates::precompute(bvh, [] {
+  CertifiedPoses(int count, int training_count, std::uint64_t seed, const PcaOptions& pca, double global_scale = 4.0)
+      : PosePca(count, training_count, seed, pca), certificates(Certificates::precompute(bvh, [&] {
           CertificateParameters parameters;
-          parameters.global_radius_scale = 4.0;
+          parameters.global_radius_scale = global_scale;
           return parameters;
         }())) {}
 };

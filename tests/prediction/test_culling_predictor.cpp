@@ -96,7 +96,7 @@ TEST_CASE("EXPERIMENTAL predicted culling: false culls counted beside the sound 
 }
 
 TEST_CASE("the culling predictor and its validation refuse inputs of the wrong shape", "[pca]") {
-  const CertifiedPoses f(8, 8, 3, sscc::test::pca_modes(3));
+  const CertifiedPoses f(8, 8, 3, sscc::test::pca_modes(3), 1.0);  // certificates only to be refused
   const std::vector<Eigen::VectorXd> q = {Eigen::VectorXd::Zero(3)};
   const std::vector<std::vector<char>> truth = {std::vector<char>(f.bvh.nodes().size(), 0)};
   CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, {}, {}), Catch::Contains("no training poses"));
