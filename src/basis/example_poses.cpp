@@ -85,11 +85,12 @@ PoseSubspace::PoseSubspace(const TriangleMesh& reference, const Eigen::MatrixXd&
   // matrix would square the singular values and lose the small components to round-off.)
   const Eigen::BDCSVD<Eigen::MatrixXd> svd(centred, Eigen::ComputeThinU);
   const Eigen::VectorXd& sigma = svd.singularValues();  // decreasing
-  if (!(sigma.size() > 0 && sigma[0] > kNegligibleSingularFraction * poses.norm())) {
+  const double round_off = kRoundOffSingularFraction * poses.norm();
+  if (!(sigma.size() > 0 && sigma[0] > round_off)) {
     throw std::invalid_argument("PCA: all example poses are the same (up to round-off)");
   }
   Eigen::Index components = 0;
-  while (components < sigma.size() && sigma[components] > kNegligibleSingularFraction * sigma[0]) ++components;
+  while (components < sigma.size() && sigma[components] > round_off) ++components;
   component_variances_ = sigma.head(components).cwiseAbs2() / static_cast<double>(count - 1);
   Eigen::Index kept = options.modes;
   if (kept > components) {

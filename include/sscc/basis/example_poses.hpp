@@ -13,10 +13,10 @@
 // the training set.
 //
 // Guarantee: with every component kept, each training pose is reproduced to round-off:
-// m + U U^T (x_p - m) = x_p up to a few units of round-off of the coordinates. Directions
-// whose singular value is below kNegligibleSingularFraction of the largest are not
-// components (they hold round-off only, and their weight would be enormous); P poses give
-// at most P - 1 components.
+// m + U U^T (x_p - m) = x_p up to the singular values dropped as round-off, below
+// kRoundOffSingularFraction (1e-13) of the poses' size. Such directions are not components
+// (rounding can make them, and their weight would be enormous); P poses give at most
+// P - 1 components.
 //
 // Units: positions and q in mesh units (U is orthonormal), variances in mesh units squared,
 // weights in 1 / mesh units squared.
@@ -32,15 +32,17 @@
 
 namespace sscc {
 
-/// A singular value of the centred poses below this fraction of the largest is round-off,
-/// not a component. Centring in doubles leaves errors of about 1e-16 of the coordinates'
-/// magnitude in every entry, which the SVD turns into singular values of that order
-/// relative to the poses' size; 1e-10 sits above that noise as long as the poses deform by
-/// more than about 1e-5 of their size. Raising it would drop real (small) components, and
-/// training poses would no longer be reproduced; lowering it towards 1e-14 would keep noise
-/// directions with weights near 1e28. Poses whose largest singular value is below this
-/// fraction of their size (the pose matrix's Frobenius norm) are one pose up to round-off.
-inline constexpr double kNegligibleSingularFraction = 1e-10;
+/// A singular value of the centred poses below this fraction of the poses' size (the
+/// Frobenius norm of the 3V x P matrix of poses as given) is round-off, not a component.
+/// Centring in doubles perturbs every entry by about 1e-16 of its coordinate, and a matrix
+/// of such errors has singular values up to about 1e-16 of the poses' size; 1e-13 leaves a
+/// factor of 1000 above that. (Relative to the largest singular value instead, the floor
+/// would depend on how much the poses deform: generated poses of a smooth family have real
+/// components down to 1e-14 of the largest.) Raising it drops real small components, and
+/// training poses are no longer reproduced; lowering it towards 1e-16 keeps noise
+/// directions with weights near 1e32. Poses whose largest singular value is below it are
+/// one pose up to round-off.
+inline constexpr double kRoundOffSingularFraction = 1e-13;
 /// Default explained-variance fraction when neither a fraction nor a count is given.
 inline constexpr double kDefaultVarianceFraction = 0.99;
 
