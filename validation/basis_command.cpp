@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
+#include "pose_files.hpp"
 #include "sscc/mesh/mesh_io.hpp"
+#include "sscc/mesh/write_off.hpp"
 #include "sscc/model/basis_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 
@@ -26,6 +29,7 @@ long run_basis(const BasisCommandOptions& o, std::ostream& out, std::ostream& pr
   Eigen::MatrixXd basis;
   Eigen::VectorXd weights;
   double lowest_frequency = std::nan("");
+  std::optional<TriangleMesh> mean_shape;  // method pca: the model's rest mesh
   const auto take = [&](const ElasticBasis& elastic) {
     basis = elastic.basis;
     weights = elastic.weights;
@@ -44,14 +48,26 @@ long run_basis(const BasisCommandOptions& o, std::ostream& out, std::ostream& pr
   } else if (o.method == "stiffness") {
     if (o.input_basis.empty()) throw std::invalid_argument("basis: method stiffness needs --input FILE.U");
     take(stiffness_scaled_basis(mesh, read_basis(o.input_basis), o.elastic, &progress));
+  } else if (o.method == "pca") {
+    if (o.poses.empty()) throw std::invalid_argument("basis: method pca needs --poses LIST");
+    const PoseSubspace subspace = pose_subspace_from_files(mesh, o.poses, o.pca, progress);
+    basis = subspace.basis();
+    weights = subspace.weights();
+    mean_shape = subspace.mean_shape();
   } else {
-    throw std::invalid_argument("basis: unknown method '" + o.method + "' (modal, polynomial, stiffness)");
+    throw std::invalid_argument("basis: unknown method '" + o.method + "' (modal, polynomial, stiffness, pca)");
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string weights_path = o.weights_output.empty() ? default_weights_path(o.output) : o.weights_output;
   write_vega_basis(o.output, basis);
   write_weights(weights_path, weights);
   progress << "basis: wrote " << o.output << " and " << weights_path << '\n';
+  if (mean_shape) {
+    const std::string mean_path =
+        o.mean_output.empty() ? std::filesystem::path(o.output).replace_extension(".mean.off").string() : o.mean_output;
+    write_off(mean_path, *mean_shape);
+    progress << "basis: wrote the mean shape (the rest mesh of x = mean + U q) to " << mean_path << '\n';
+  }
   char line[256];
   std::snprintf(line, sizeof line, "basis: method=%s vertices=%d modes=%d time_s=%.3f lowest_frequency_hz=%.6g",
                 o.method.c_str(), mesh.vertex_count(), static_cast<int>(basis.cols()), seconds, lowest_frequency);

@@ -1,5 +1,6 @@
 // `sscc basis`: makes a subspace basis for a mesh and writes it as a Vega .U file with its
-// weights (one number per mode, text), printing at the end exactly one line
+// weights (one number per mode, text), and for method pca the mean shape (the model's rest
+// mesh) as an OFF file, printing at the end exactly one line
 //   basis: method=M vertices=N modes=R time_s=X lowest_frequency_hz=X
 // (the frequency is nan where it does not apply: displacement-normalised polynomial modes
 // and example poses).
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sscc/basis/example_poses.hpp"
 #include "sscc/basis/modal_analysis.hpp"
 
 namespace sscc::validation {
@@ -23,6 +25,9 @@ struct BasisCommandOptions {
   std::string input_basis;       ///< method stiffness: the basis to scale
   std::string output;            ///< the .U file
   std::string weights_output;    ///< "" means output with its extension replaced by .weights
+  std::vector<std::string> poses;  ///< method pca: example pose files or directories of them
+  PcaOptions pca;                  ///< method pca: modes or explained-variance fraction
+  std::string mean_output;         ///< method pca: "" means output with its extension replaced by .mean.off
 };
 
 /// The weights file written next to a basis file: the extension replaced by ".weights".

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/sign_convention.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 
 namespace sscc {
@@ -51,15 +52,6 @@ class ScaledShiftInvert {
   Eigen::VectorXd sqrt_mass_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
 };
-
-/// Each column with its largest-magnitude entry positive, so bases are reproducible.
-void fix_signs(Eigen::MatrixXd& vectors) {
-  for (Eigen::Index c = 0; c < vectors.cols(); ++c) {
-    Eigen::Index largest = 0;
-    vectors.col(c).cwiseAbs().maxCoeff(&largest);
-    if (vectors(largest, c) < 0.0) vectors.col(c) *= -1.0;
-  }
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -148,7 +140,7 @@ VibrationModes lowest_vibration_modes(const Eigen::SparseMatrix<double>& stiffne
     modes.zero_energy_modes = found_zero;
     modes.eigenvalues = values.segment(found_zero, count);
     modes.vectors = mass.cwiseSqrt().cwiseInverse().asDiagonal() * vectors.middleCols(found_zero, count);
-    fix_signs(modes.vectors);
+    make_largest_entries_positive(modes.vectors);
     return modes;
   }
   throw std::runtime_error("modal analysis: too many zero-energy modes (a mesh in many loose pieces?)");
@@ -273,7 +265,7 @@ ElasticBasis stiffness_scale(const ElasticSystem& system, const Eigen::MatrixXd&
   const Eigen::VectorXd elastic = lambda.tail(kept);
   const double cap = options.weight_filter_ratio * elastic[0];
   Eigen::MatrixXd rotated = orthonormal * solver.eigenvectors().rightCols(kept);
-  fix_signs(rotated);
+  make_largest_entries_positive(rotated);
   ElasticBasis result = describe(system);
   result.basis = embed_in_surface(system.volume, rotated);
   result.weights = 0.5 * (elastic.cwiseInverse().array() + 1.0 / cap).inverse().matrix();

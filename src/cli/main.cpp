@@ -19,6 +19,7 @@
 #include "decimate_command.hpp"
 #include "demo/demo_command.hpp"
 #include "kernel_validation.hpp"
+#include "poses_command.hpp"
 #include "precompute_command.hpp"
 #include "selfccd_validation.hpp"
 
@@ -49,9 +50,17 @@ const char* kUsage =
     "  basis     a subspace basis for a mesh, written as a Vega .U file and its weights\n"
     "            --mesh FILE            OFF, OBJ or PLY\n"
     "            --method M             modal (linear modal analysis, weights omega^2/2),\n"
-    "                                   polynomial (the 27 linear and quadratic modes), or\n"
-    "                                   stiffness (stiffness-scale the basis given by --input)\n"
-    "            --modes R              modes wanted (default 30; polynomial: at most 27)\n"
+    "                                   polynomial (the 27 linear and quadratic modes),\n"
+    "                                   stiffness (stiffness-scale the basis given by --input), or\n"
+    "                                   pca (principal components of --poses, weights 1/variance)\n"
+    "            --modes R              modes wanted (default 30; polynomial: at most 27;\n"
+    "                                   pca: default by --variance)\n"
+    "            --poses LIST           pca: comma-separated pose meshes (the connectivity of\n"
+    "                                   --mesh) or directories of them\n"
+    "            --variance F           pca: keep the fewest components explaining the fraction F\n"
+    "                                   of the variance (default 0.99)\n"
+    "            --mean-output FILE.off pca: the mean shape, the model's rest mesh (default\n"
+    "                                   FILE.mean.off beside the .U)\n"
     "            --scaling S            polynomial: stiffness (diagonalised against the reduced\n"
     "                                   stiffness, filtered weights; default) or displacement\n"
     "                                   (largest vertex displacement = box diagonal, weights 1)\n"
@@ -103,6 +112,18 @@ const char* kUsage =
     "                                   and back over 10 steps\n"
     "            --certificates FILE    certificate file from precompute (method sscc)\n"
     "            --methods LIST         comma-separated: sscc, traditional, exhaustive, fcl\n"
+    "  poses     subspace from example poses, end to end: seeded synthetic poses (twist, bend,\n"
+    "            polynomial modes), PCA, key points, sound certificates and the EXPERIMENTAL,\n"
+    "            NOT CONSERVATIVE regression-predicted culling, false culls side by side\n"
+    "            --mesh FILE            OFF, OBJ or PLY\n"
+    "            --poses N --held-out H training and held-out poses (default 40, 20)\n"
+    "            --seed S               default 1\n"
+    "            --twist A --bend B     largest end angles, radians (default 1, 1.5)\n"
+    "            --amplitude A          polynomial displacement, box diagonals (default 0.02)\n"
+    "            --variance F | --modes R   components kept (default variance 0.999)\n"
+    "            --key-radius F         key point sampling radius, box diagonals (default 0.1)\n"
+    "            --greedy G             greedy key point additions (default 8)\n"
+    "            --epsilon E --global-scale G   certificates, as for precompute (default 0.1, 4)\n"
     "  help      this text\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -255,11 +276,19 @@ int run_certificate_sweep(const std::vector<std::string>& args) {
   return run_report(options, flags.quiet, sscc::validation::run_certificate_sweep, "certificates");
 }
 
+/// --modes R or --variance F (not both) for a PCA.
+void pca_options(const Flags& flags, sscc::PcaOptions& pca) {
+  if (flags.has("--modes") && flags.has("--variance")) usage_error("give --modes or --variance, not both");
+  if (flags.has("--modes")) pca.modes = flags.number<int>("--modes");
+  if (flags.has("--variance")) pca.variance_fraction = flags.number<double>("--variance");
+}
+
 int run_basis(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(args,
                                   {"--mesh", "--method", "--modes", "--scaling", "--input", "--youngs", "--poisson",
                                    "--density", "--volume", "--voxel-resolution", "--tetgen-max-volume",
-                                   "--filter-ratio", "--output", "--weights-output"},
+                                   "--filter-ratio", "--output", "--weights-output", "--poses", "--variance",
+                                   "--mean-output"},
                                   "basis");
   if (!flags.has("--mesh")) usage_error("basis needs --mesh FILE");
   if (!flags.has("--output")) usage_error("basis needs --output FILE.U");
@@ -269,6 +298,9 @@ int run_basis(const std::vector<std::string>& args) {
   if (flags.has("--weights-output")) options.weights_output = flags.text("--weights-output");
   if (flags.has("--method")) options.method = flags.text("--method");
   if (flags.has("--modes")) options.elastic.modes = flags.number<int>("--modes");
+  if (flags.has("--poses")) options.poses = split_list(flags.text("--poses"));
+  if (flags.has("--mean-output")) options.mean_output = flags.text("--mean-output");
+  if (options.method == "pca") pca_options(flags, options.pca);
   if (flags.has("--scaling")) {
     const std::string& scaling = flags.text("--scaling");
     if (scaling == "stiffness") {
@@ -358,6 +390,30 @@ int run_decimate(const std::vector<std::string>& args) {
   return run_report(options, flags.quiet, sscc::validation::run_decimate, "decimate");
 }
 
+int run_poses(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args,
+                                  {"--mesh", "--poses", "--held-out", "--seed", "--twist", "--bend", "--amplitude",
+                                   "--variance", "--modes", "--key-radius", "--greedy", "--epsilon",
+                                   "--global-scale"},
+                                  "poses");
+  if (!flags.has("--mesh")) usage_error("poses needs --mesh FILE");
+  sscc::validation::PosesCommandOptions options;
+  options.mesh = flags.text("--mesh");
+  if (flags.has("--poses")) options.training = flags.number<int>("--poses");
+  if (flags.has("--held-out")) options.held_out = flags.number<int>("--held-out");
+  if (flags.has("--seed")) options.generator.seed = flags.number<std::uint64_t>("--seed");
+  if (flags.has("--twist")) options.generator.twist = flags.number<double>("--twist");
+  if (flags.has("--bend")) options.generator.bend = flags.number<double>("--bend");
+  if (flags.has("--amplitude")) options.generator.modal_amplitude = flags.number<double>("--amplitude");
+  pca_options(flags, options.pca);
+  if (flags.has("--key-radius")) options.key_points.radius_fraction = flags.number<double>("--key-radius");
+  if (flags.has("--greedy")) options.key_points.greedy_additions = flags.number<int>("--greedy");
+  if (flags.has("--epsilon")) options.certificates.epsilon = flags.number<double>("--epsilon");
+  if (flags.has("--global-scale")) options.certificates.global_radius_scale = flags.number<double>("--global-scale");
+  if (options.training < 2 || options.held_out < 1) usage_error("poses needs --poses >= 2 and --held-out >= 1");
+  return run_report(options, flags.quiet, sscc::validation::run_poses, "poses");
+}
+
 int run_selfccd(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(
       args,
@@ -392,6 +448,7 @@ int main(int argc, char** argv) {
     if (command == "decimate") return run_decimate(args);
     if (command == "demo") return run_demo(args);
     if (command == "bench") return run_bench(args);
+    if (command == "poses") return run_poses(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;
