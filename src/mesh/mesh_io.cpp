@@ -48,7 +48,9 @@ TriangleMesh read_mesh(const std::string& path, MeshReadReport* report) {
   } else if (ext == "ply") {
     raw = mesh_parsing::read_ply(reader);
   } else {
-    throw MeshFileError(path, 0, "unknown mesh format '." + ext + "' (expected .off, .obj or .ply)");
+    throw MeshFileError(path, 0,
+                        (ext.empty() ? std::string("no file extension") : "unknown mesh format '." + ext + "'") +
+                            " (expected .off, .obj or .ply)");
   }
   MeshReadReport local;
   MeshReadReport& r = report ? *report : local;

@@ -162,6 +162,7 @@ TEST_CASE("bad files are refused with the file, the line and the problem", "[mes
   CHECK_THAT(error_of("points.obj", "v 0 0 0\nv 1 0 0\n"), Catch::Contains("no faces"));
   CHECK_THAT(error_of("text.off", "hello world\n"), Catch::Contains("expected the header 'OFF'"));
   CHECK_THAT(error_of("mesh.stl", "solid\n"), Catch::Contains("unknown mesh format"));
+  CHECK_THAT(error_of("mesh", "OFF\n"), Catch::Contains("no file extension"));
   CHECK_THAT(error_of("cut.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2\n"
                                  "property float x\nproperty float y\nproperty float z\nend_header\nab"),
              Catch::Contains("binary data ends early"));

@@ -69,16 +69,19 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
            << " triangles\n";
   Eigen::MatrixXd basis;
   Eigen::VectorXd weights;
+  // Cached files are named by what they were made from, so that other materials or meshes
+  // keep their own.
+  const std::string key = o.basis.empty() ? basis_key(mesh, o) : "sscc demo basis file " + o.basis;
+  char stem_text[512];
+  std::snprintf(stem_text, sizeof stem_text, "%s/%s-%s%d-%016zx", o.cache_dir.c_str(), assets.name.c_str(),
+                o.basis.empty() ? o.basis_kind.c_str() : "file", o.modes, std::hash<std::string>{}(key));
+  const std::string stem = stem_text;
   if (!o.basis.empty()) {
     basis = read_basis(o.basis);
     weights = read_weights(default_weights_path(o.basis));
   } else {
     fs::create_directories(o.cache_dir);
-    char stem[256];
-    std::snprintf(stem, sizeof stem, "%s/%s-%s%d", o.cache_dir.c_str(), assets.name.c_str(), o.basis_kind.c_str(),
-                  o.modes);
-    const std::string basis_path = std::string(stem) + ".U", key_path = std::string(stem) + ".key";
-    const std::string key = basis_key(mesh, o);
+    const std::string basis_path = stem + ".U", key_path = stem + ".key";
     if (fs::exists(basis_path) && fs::exists(key_path) && read_text(key_path) == key) {
       basis = read_basis(basis_path);
       weights = read_weights(default_weights_path(basis_path));
@@ -106,8 +109,7 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
   }
   assets.model = std::make_unique<SubspaceModel>(std::move(mesh), basis, weights);
   assets.bvh = std::make_unique<SubspaceBvh>(*assets.model);
-  const std::string certificate_path = o.cache_dir + "/" + assets.name + "-" + o.basis_kind + "-r" +
-                                       std::to_string(assets.model->mode_count()) + ".sscc";
+  const std::string certificate_path = stem + ".sscc";  // the file checks itself against the model too
   std::string why = "a fresh precomputation was asked for";
   if (!o.fresh_certificates) {
     try {
