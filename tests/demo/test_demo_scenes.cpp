@@ -91,7 +91,20 @@ TEST_CASE("demo scenes: seeded, rigid frames, impacts and strikes excite the mod
 
   sscc::validation::SpringSceneOptions spring_options;
   spring_options.strike_interval = 0.2;
+  spring_options.initial_compression = 0.1;
   sscc::validation::SpringScene spring(model, 300.0, spring_options);
+  // Held at the static compression that shortens the box (height 0.5 along z) by a tenth of
+  // its height: the mean z of its top vertices against its bottom ones, then released.
+  const auto first = spring.step();
+  const std::vector<Eigen::Vector3d> held = model.deformed_positions(first[0].q0);
+  double top = 0.0, bottom = 0.0;
+  int tops = 0, bottoms = 0;
+  for (int v = 0; v < box.vertex_count(); ++v) {
+    if (box.vertices()[v].z() >= 0.5 - 0.05 * 0.5) top += held[v].z() - box.vertices()[v].z(), ++tops;
+    if (box.vertices()[v].z() <= 0.05 * 0.5) bottom += held[v].z() - box.vertices()[v].z(), ++bottoms;
+  }
+  CHECK(bottom / bottoms - top / tops == Approx(0.1 * 0.5).epsilon(1e-9));
+  CHECK(first[0].q1 != first[0].q0);
   for (int k = 0; k < 60; ++k) spring.step();
   CHECK(spring.strikes() >= 2);
 }

@@ -30,6 +30,12 @@ ModalDynamics::ModalDynamics(const Eigen::VectorXd& omega_squared, double dampin
   }
 }
 
+void ModalDynamics::hold_at(const Eigen::VectorXd& q) {
+  if (q.size() != q_.size()) throw std::invalid_argument("modal dynamics: q has the wrong size");
+  q_ = q;
+  v_.setZero();
+}
+
 void ModalDynamics::step() {
   const Eigen::VectorXd q = qq_.cwiseProduct(q_) + qv_.cwiseProduct(v_);
   v_ = vq_.cwiseProduct(q_) + vv_.cwiseProduct(v_);

@@ -29,6 +29,8 @@ class ModalDynamics {
 
   const Eigen::VectorXd& q() const { return q_; }
   const Eigen::VectorXd& velocity() const { return v_; }
+  /// Holds the object at q, at rest (to be let go by the next step).
+  void hold_at(const Eigen::VectorXd& q);
   /// Adds an impulse in modal coordinates (Phi^T J for nodal impulses J).
   void add_impulse(const Eigen::VectorXd& modal_impulse) { v_ += modal_impulse; }
   /// Advances one step under no force.

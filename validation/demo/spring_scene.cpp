@@ -7,8 +7,25 @@ namespace sscc::validation {
 
 namespace {
 
-/// Fraction of the height, at the top, whose vertices take a strike.
-constexpr double kStrikeBand = 0.05;
+/// Fraction of the height, at each end, whose vertices take a strike or the load.
+constexpr double kEndBand = 0.05;
+
+/// The static modal response to a unit load pressing the vertices of `top` down and those of
+/// `bottom` up (q_i = f_i / omega_i^2, omega^2 = 2 w), scaled to shorten the spring (the mean
+/// z of the top vertices against the bottom ones) by `shortening`.
+Eigen::VectorXd compression(const SubspaceModel& model, const std::vector<int>& top, const std::vector<int>& bottom,
+                            double shortening) {
+  const Eigen::VectorXd force = modal_impulse(model, top, Eigen::Vector3d(0, 0, -1)) +
+                                modal_impulse(model, bottom, Eigen::Vector3d(0, 0, 1));
+  const Eigen::VectorXd q = force.cwiseQuotient(2.0 * model.weights());
+  const Eigen::VectorXd q_hat = q.cwiseProduct(model.weights().cwiseSqrt());
+  const auto mean_z = [&](const std::vector<int>& vertices) {
+    double z = 0.0;
+    for (int v : vertices) z += model.scaled_basis().row(3 * v + 2).dot(q_hat);
+    return z / static_cast<double>(vertices.size());
+  };
+  return q * (shortening / (mean_z(bottom) - mean_z(top)));
+}
 
 }  // namespace
 
@@ -18,14 +35,20 @@ SpringScene::SpringScene(const SubspaceModel& model, double mass, const SpringSc
   const Aabb box = mesh.bounding_box();
   const Eigen::Vector3d& lo = box.lo;
   const Eigen::Vector3d& hi = box.hi;
+  const double height = hi.z() - lo.z();
+  std::vector<int> bottom;
   for (int v = 0; v < mesh.vertex_count(); ++v) {
-    if (mesh.vertices()[v].z() >= hi.z() - kStrikeBand * (hi.z() - lo.z())) top_.push_back(v);
+    if (mesh.vertices()[v].z() >= hi.z() - kEndBand * height) top_.push_back(v);
+    if (mesh.vertices()[v].z() <= lo.z() + kEndBand * height) bottom.push_back(v);
   }
+  const Eigen::VectorXd held = compression(model, top_, bottom, options.initial_compression * height);
   const Eigen::VectorXd omega_squared = 2.0 * model.weights();
   const double pitch = options.spacing * (hi - lo).maxCoeff();
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
-    Spring s{ModalDynamics(omega_squared, options.motion.damping_ratio, options.motion.dt), {}, uniform(rng_) * 0.5};
+    Spring s{ModalDynamics(omega_squared, options.motion.damping_ratio, options.motion.dt), {},
+             options.strike_interval * (0.5 + 0.5 * uniform(rng_))};
+    s.modes.hold_at(held);
     s.frame.translation = Eigen::Vector3d(pitch * i, 0.0, 0.0);
     springs_.push_back(s);
   }
