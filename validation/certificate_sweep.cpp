@@ -78,20 +78,15 @@ long run_certificate_sweep(const CertificateSweepOptions& o, std::ostream& out, 
   }
   csv.close();
   progress << "csv: " << csv_path << '\n';
-  std::ostringstream g;
-  const std::string png = o.output_dir + "/certificates_epsilon.png";
-  g << "set terminal pngcairo size 1100,450\nset output '" << png << "'\n"
-    << "set datafile separator ','\nset multiplot layout 1,2\nset logscale x\nset xlabel 'epsilon'\n"
-    << "set key top right\nset title 'Precomputation against accuracy'\nset ylabel 'seconds'\n"
-    << "set y2label 'root radius'\nset y2tics\n"
-    << "plot '" << csv_path << "' using 1:2 skip 1 with linespoints title 'precompute time', "
-    << "'' using 1:3 skip 1 axes x1y2 with linespoints title 'root radius'\n"
-    << "unset y2label\nunset y2tics\n"
-    << "set title 'Query: speedup over the traditional query'\nset ylabel 'speedup'\n"
-    << "plot '" << csv_path << "' using 1:8 skip 1 with linespoints title 'speedup (mean time)', "
-    << "'' using 1:($5*100) skip 1 with linespoints title 'node visits culled (%)'\n"
-    << "unset multiplot\n";
-  render_plot(g.str(), o.output_dir + "/certificates_epsilon.gnuplot", png, progress);
+  Figure figure{o.output_dir + "/certificates_epsilon.png", 1100, 450, {}};
+  figure.panels.push_back({"Precomputation against accuracy", "epsilon", "seconds", "root radius", true, false,
+                           "top right",
+                           {{csv_path, 1, "2", "precompute time"},
+                            {csv_path, 1, "3", "root radius", "linespoints lw 2", true}}});
+  figure.panels.push_back({"Query: speedup over the traditional query", "epsilon", "speedup", "", true, false,
+                           "top right",
+                           {{csv_path, 1, "8", "speedup (mean time)"}, {csv_path, 1, "($5*100)", "node visits culled (%)"}}});
+  render_figure(figure, progress);
   return problems;
 }
 

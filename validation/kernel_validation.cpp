@@ -19,6 +19,7 @@
 #include "plot.hpp"
 #include "query_generators.hpp"
 #include "query_set.hpp"
+#include "statistics.hpp"
 
 namespace sscc::validation {
 
@@ -64,8 +65,7 @@ double median_mean_us(const std::vector<Query>& queries, const std::function<boo
     sink = sink + hits;
     means.push_back(1e6 * seconds / std::max<std::size_t>(1, queries.size()));
   }
-  std::nth_element(means.begin(), means.begin() + means.size() / 2, means.end());
-  return means[means.size() / 2];
+  return median(means);
 }
 
 bool ours(const Query& q) { return run_kernel(q).hit; }
@@ -159,21 +159,18 @@ long report_generated(const std::string& label, Kind kind, const std::vector<Que
 }
 
 void write_plots(const std::string& dir, std::ostream& progress) {
-  std::ostringstream g;
-  g << "set terminal pngcairo size 1100,450\n"
-    << "set output '" << dir << "/kernels_time_vs_error.png'\n"
-    << "set datafile separator ','\nset multiplot layout 1,2\n"
-    << "set title 'Time of impact: cost against tolerance'\nset logscale x\n"
-    << "set xlabel 'toi tolerance'\nset ylabel 'mean time per query (us)'\nset key top left\n"
-    << "plot '" << dir << "/toi_tolerance.csv' using 1:2 skip 1 with linespoints title 'vertex-face', "
-    << "'' using 1:3 skip 1 with linespoints title 'edge-edge'\n"
-    << "set title 'Minimum separation d: positives beyond touching'\n"
-    << "set xlabel 'd'\nset ylabel 'queries'\n"
-    << "plot '" << dir << "/separation.csv' using 1:3 skip 1 with linespoints title 'positives', "
-    << "'' using 1:4 skip 1 with linespoints title 'touching (exact, d = 0)', "
-    << "'' using 1:6 skip 1 with linespoints title 'not confirmed by sampling (FP bound)'\n"
-    << "unset multiplot\n";
-  render_plot(g.str(), dir + "/plots.gnuplot", dir + "/kernels_time_vs_error.png", progress);
+  const std::string tolerance = dir + "/toi_tolerance.csv";
+  const std::string separation = dir + "/separation.csv";
+  Figure figure{dir + "/kernels_time_vs_error.png", 1100, 450, {}};
+  figure.panels.push_back({"Time of impact: cost against tolerance", "toi tolerance", "mean time per query (us)", "",
+                           true, false, "top left",
+                           {{tolerance, 1, "2", "vertex-face"}, {tolerance, 1, "3", "edge-edge"}}});
+  figure.panels.push_back({"Minimum separation d: positives beyond touching", "d", "queries", "", true, false,
+                           "top left",
+                           {{separation, 1, "3", "positives"},
+                            {separation, 1, "4", "touching (exact, d = 0)"},
+                            {separation, 1, "6", "not confirmed by sampling (FP bound)"}}});
+  render_figure(figure, progress);
 }
 
 std::vector<ToleranceTiming> toi_tolerance_sweep(const std::vector<Query>& vf, const std::vector<Query>& ee,

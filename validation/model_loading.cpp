@@ -37,11 +37,11 @@ SubspaceModel load_model(const ModelSource& source, std::ostream& progress) {
   const auto generated = [&](const std::string& prefix) {
     return source.basis.compare(0, prefix.size(), prefix) == 0 ? mode_count(source.basis.substr(prefix.size())) : 0;
   };
-  if (const int modes = generated("polynomial:")) {
-    basis = polynomial_basis(mesh, modes);
-  } else if (const int modes = generated("modal:")) {
+  if (const int polynomial_modes = generated("polynomial:")) {
+    basis = polynomial_basis(mesh, polynomial_modes);
+  } else if (const int modal_modes = generated("modal:")) {
     ElasticBasisOptions options;
-    options.modes = modes;
+    options.modes = modal_modes;
     ElasticBasis modal = modal_basis(mesh, options, &progress);
     basis = std::move(modal.basis);
     weights = std::move(modal.weights);

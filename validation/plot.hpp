@@ -1,15 +1,41 @@
-// Renders a gnuplot script to PNG when gnuplot is installed; validation output is complete
-// without it (the CSV files hold the data).
+// Figures rendered to PNG with gnuplot when it is installed; validation output is complete
+// without it (the CSV files hold the data). A figure is described, not scripted: panels of
+// series read from CSV files (comma-separated, one header line).
 #pragma once
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace sscc::validation {
 
-/// Writes `script` to `script_path` and runs gnuplot on it; reports the PNG, or that only
-/// the CSV files were written, on `progress`.
-void render_plot(const std::string& script, const std::string& script_path, const std::string& png,
-                 std::ostream& progress);
+/// One curve: column `x` of `csv` against `y` (a column number, or a gnuplot expression in
+/// parentheses such as "($5*100)").
+struct PlotSeries {
+  std::string csv;
+  int x = 1;
+  std::string y;
+  std::string title;
+  std::string style = "linespoints lw 2";
+  bool right_axis = false;  ///< against the y2 axis
+};
+
+struct PlotPanel {
+  std::string title, x_label, y_label, y2_label;
+  bool log_x = false, log_y = false;
+  std::string key = "top left";
+  std::vector<PlotSeries> series;
+};
+
+/// Panels side by side in one PNG of width x height pixels.
+struct Figure {
+  std::string png;
+  int width = 900, height = 500;
+  std::vector<PlotPanel> panels;
+};
+
+/// Writes the figure's gnuplot script next to the PNG (same name, .gnuplot) and runs gnuplot
+/// on it; reports the PNG, or that only the CSV files were written, on `progress`.
+void render_figure(const Figure& figure, std::ostream& progress);
 
 }  // namespace sscc::validation

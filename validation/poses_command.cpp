@@ -7,13 +7,19 @@
 #include <vector>
 
 #include "sscc/mesh/mesh_io.hpp"
-#include "sscc/prediction/cull_validation.hpp"
-#include "sscc/prediction/node_collisions.hpp"
+#include "sscc/experimental/cull_validation.hpp"
+#include "sscc/experimental/node_collisions.hpp"
 #include "sscc/query/pose_step_ccd.hpp"
 
 namespace sscc::validation {
 
 namespace {
+
+using experimental::colliding_nodes;
+using experimental::CullCounts;
+using experimental::CullingPredictor;
+using experimental::CullValidation;
+using experimental::validate_culling;
 
 /// The largest vertex residual over the poses (columns) for coordinates from `coordinates`.
 template <typename Coordinates>

@@ -10,6 +10,7 @@
 #include "fcl_settle.hpp"
 #include "fcl_self_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
+#include "statistics.hpp"
 #include "trajectory.hpp"
 
 namespace sscc::validation {
@@ -26,11 +27,6 @@ PairList pair_list(const SelfCcdReport& report) {
   PairList pairs;
   for (const auto& p : report.pairs) pairs.emplace_back(p.first, p.second);
   return pairs;
-}
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/sign_convention.hpp"
+#include "sscc/common/timing.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 
 namespace sscc {
@@ -52,10 +53,6 @@ class ScaledShiftInvert {
   Eigen::VectorXd sqrt_mass_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 struct ElasticSystem {
   VolumeMesh volume;

@@ -20,6 +20,12 @@ namespace {
 // paper's running minimum (sibling radii close to the parent's).
 constexpr double kSiblingReach = 2.0;
 
+/// Relative shrink of the box-box radius: its gap, rates and quotient each round by a few
+/// units of 2^-53 (relative), far below this, so the shrunk radius never exceeds the exact
+/// one. Smaller (towards 1e-15) risks a radius rounded above the true one, which could
+/// certify a pair that touches; larger only culls a little less.
+constexpr double kBoxBoxRoundingShrink = 1e-9;
+
 /// Smallest ||q_hat|| at which the subspace boxes of nodes a and b can meet: along axis D
 /// the centres' gap g_D closes at rate at most ||(C_a - C_b)_D||_2 and the half extents grow
 /// at rate_a,D + rate_b,D per unit ||q_hat|| (Cauchy-Schwarz), and all three axes must close.
@@ -34,7 +40,7 @@ double box_box_radius(const SubspaceBvh& bvh, int a, int b) {
     radius = std::max(radius, rate > 0.0 ? gap / rate : INFINITY);
   }
   // The bound only culls: shrunk so that its own rounding never culls a closer pair.
-  return radius * (1.0 - 1e-9);
+  return radius * (1.0 - kBoxBoxRoundingShrink);
 }
 
 /// The minimum radius over the pairs seen so far, as a lower bound and as the smallest

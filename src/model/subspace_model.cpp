@@ -9,12 +9,11 @@
 namespace sscc {
 
 SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis,
-                             const Eigen::VectorXd& weights)
-    : mesh_(std::move(mesh)), weights_(weights) {
-  const long rows = 3L * mesh_.vertex_count();
+                             const Eigen::VectorXd& weights) {
+  const long rows = 3L * mesh.vertex_count();
   if (basis.rows() != rows) {
     throw std::invalid_argument("SubspaceModel: the basis has " + std::to_string(basis.rows()) +
-                                " rows, but the mesh's " + std::to_string(mesh_.vertex_count()) +
+                                " rows, but the mesh's " + std::to_string(mesh.vertex_count()) +
                                 " vertices need " + std::to_string(rows));
   }
   if (basis.cols() == 0) throw std::invalid_argument("SubspaceModel: the basis has no modes");
@@ -29,16 +28,18 @@ SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis,
                                   " is not a positive finite number");
     }
   }
-  scaled_basis_ = basis * weights_.cwiseSqrt().cwiseInverse().asDiagonal();
-  if (!all_finite(scaled_basis_)) {
+  RowMajorMatrix scaled_basis = basis * weights.cwiseSqrt().cwiseInverse().asDiagonal();
+  if (!all_finite(scaled_basis)) {
     throw std::invalid_argument("SubspaceModel: basis / sqrt(weight) overflows; a weight is too small");
   }
+  state_ = std::make_shared<const State>(State{std::move(mesh), weights, std::move(scaled_basis)});
 }
 
 Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) const {
-  if (q.size() != weights_.size()) {
+  const Eigen::VectorXd& weights = state_->weights;
+  if (q.size() != weights.size()) {
     throw std::invalid_argument("SubspaceModel: q has " + std::to_string(q.size()) +
-                                " coordinates, the model has " + std::to_string(weights_.size()) +
+                                " coordinates, the model has " + std::to_string(weights.size()) +
                                 " modes");
   }
   for (long i = 0; i < q.size(); ++i) {
@@ -46,7 +47,7 @@ Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) cons
       throw std::invalid_argument("SubspaceModel: q[" + std::to_string(i) + "] is not finite");
     }
   }
-  Eigen::VectorXd q_hat = weights_.cwiseSqrt().cwiseProduct(q);
+  Eigen::VectorXd q_hat = weights.cwiseSqrt().cwiseProduct(q);
   if (!all_finite(q_hat) || !std::isfinite(q_hat.stableNorm())) {
     throw std::invalid_argument("SubspaceModel: q scaled by the weights overflows");
   }
@@ -59,8 +60,8 @@ double SubspaceModel::weighted_norm(const Eigen::VectorXd& q) const {
 
 std::vector<Eigen::Vector3d> SubspaceModel::deformed_positions(const Eigen::VectorXd& q) const {
   const Eigen::VectorXd q_hat = scaled_coordinates(q);
-  std::vector<Eigen::Vector3d> x(mesh_.vertex_count());
-  for (int v = 0; v < mesh_.vertex_count(); ++v) x[v] = position(v, q_hat);
+  std::vector<Eigen::Vector3d> x(mesh().vertex_count());
+  for (int v = 0; v < mesh().vertex_count(); ++v) x[v] = position(v, q_hat);
   return x;
 }
 

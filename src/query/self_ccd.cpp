@@ -11,6 +11,8 @@
 #include <tuple>
 
 #include "common/finite.hpp"
+#include "query/descent.hpp"
+#include "query/feature_hits.hpp"
 #include "query/sweep.hpp"
 #include "sscc/ccd/kernels.hpp"
 
@@ -20,6 +22,10 @@ namespace {
 
 using detail::apart_in_common_frame;
 using detail::box_at;
+using detail::descend_larger;
+using detail::EarliestPerKey;
+using detail::FeatureHits;
+using detail::for_each_triangle_pair_of;
 using detail::hull;
 using detail::LazyBoxes;
 using detail::overlap;
@@ -65,7 +71,8 @@ class StepContext {
         computed_(mesh_.vertex_count(), 0),
         subspace_boxes_(bvh.nodes().size()),
         node_sweeps_(bvh.nodes().size()),
-        triangle_sweeps_(mesh_.triangle_count()) {}
+        triangle_sweeps_(mesh_.triangle_count()),
+        hits_(options.mode) {}
 
   /// Given positions at both ends (the traditional query on poses the subspace does not
   /// hold): every vertex known, boxes refitted.
@@ -88,7 +95,7 @@ class StepContext {
     }
     return sweeps_may_touch(node_sweep(a), node_sweep(b), separation_);
   }
-  bool stopped() const { return stop_; }
+  bool stopped() const { return hits_.stopped(); }
   SelfCcdStats& stats() { return stats_; }
 
   /// Whether the triangle at position i of the BVH's order can touch anything in node n:
@@ -104,7 +111,7 @@ class StepContext {
   /// every triangle and node box containing them overlaps too, so the owner is visited.
   /// The triangles at positions i and j of the BVH's order.
   void test_triangle_pair(int i, int j) {
-    if (stop_) return;
+    if (stopped()) return;
     const int a = bvh_.triangle_order()[i];
     const int b = bvh_.triangle_order()[j];
     if (mesh_.adjacent(a, b) || !sweeps_may_touch(triangle_sweep(i), triangle_sweep(j), separation_)) return;
@@ -113,34 +120,35 @@ class StepContext {
     const Aabb box_b = hull(triangle_sweep(j).start, triangle_sweep(j).end);
     const Triangle& ta = mesh_.triangles()[a];
     const Triangle& tb = mesh_.triangles()[b];
-    for (int i = 0; i < 3; ++i) {
-      if (overlap(point_box(ta[i]), box_b, separation_) && owns_vertex_face(a, ta[i], b)) vertex_face(ta[i], b);
-      if (overlap(point_box(tb[i]), box_a, separation_) && owns_vertex_face(b, tb[i], a)) vertex_face(tb[i], a);
+    for (int k = 0; k < 3; ++k) {
+      if (overlap(point_box(ta[k]), box_b, separation_) && owns_vertex_face(a, ta[k], b)) vertex_face(ta[k], b);
+      if (overlap(point_box(tb[k]), box_a, separation_) && owns_vertex_face(b, tb[k], a)) vertex_face(tb[k], a);
     }
     std::array<Aabb, 3> edges_b;
-    for (int j = 0; j < 3; ++j) edges_b[j] = edge_box(mesh_.triangle_edges(b)[j]);
+    for (int l = 0; l < 3; ++l) edges_b[l] = edge_box(mesh_.triangle_edges(b)[l]);
     const std::pair<int, int> pair{std::min(a, b), std::max(a, b)};
-    for (int i = 0; i < 3; ++i) {
-      const int e = mesh_.triangle_edges(a)[i];
+    for (int k = 0; k < 3; ++k) {
+      const int e = mesh_.triangle_edges(a)[k];
       const Aabb edge_a = edge_box(e);
       if (!overlap(edge_a, box_b, separation_)) continue;
-      for (int j = 0; j < 3; ++j) {
-        const int g = mesh_.triangle_edges(b)[j];
-        if (overlap(edge_a, edges_b[j], separation_) && owns_edge_edge(pair, e, g)) edge_edge(e, g);
+      for (int l = 0; l < 3; ++l) {
+        const int g = mesh_.triangle_edges(b)[l];
+        if (overlap(edge_a, edges_b[l], separation_) && owns_edge_edge(pair, e, g)) edge_edge(e, g);
       }
     }
   }
 
   SelfCcdReport finish(std::chrono::steady_clock::time_point start) {
-    if (options_.mode == SelfCcdMode::kEarliest && !feature_hits_.empty()) {
+    std::vector<FeatureContact>& hits = hits_.hits();
+    if (options_.mode == SelfCcdMode::kEarliest && !hits.empty()) {
       double earliest = 1.0;
-      for (const FeatureContact& c : feature_hits_) earliest = std::min(earliest, c.toi);
-      feature_hits_.erase(std::remove_if(feature_hits_.begin(), feature_hits_.end(),
-                                         [&](const FeatureContact& c) { return c.toi != earliest; }),
-                          feature_hits_.end());
+      for (const FeatureContact& c : hits) earliest = std::min(earliest, c.toi);
+      hits.erase(std::remove_if(hits.begin(), hits.end(), [&](const FeatureContact& c) { return c.toi != earliest; }),
+                 hits.end());
     }
+    stats_.kernel_calls = hits_.kernel_calls();
     std::vector<TrianglePairContact> pairs = pairs_from_features();  // before the move below
-    return sorted_report(std::move(pairs), std::move(feature_hits_), stats_, start);
+    return sorted_report(std::move(pairs), std::move(hits), stats_, start);
   }
 
  private:
@@ -208,56 +216,35 @@ class StepContext {
     return true;
   }
 
-  void record(const ccd::CcdResult& r, FeatureKind kind, int first, int second) {
-    ++stats_.kernel_calls;
-    if (!r.hit) return;
-    feature_hits_.push_back({kind, first, second, r.toi});
-    if (options_.mode == SelfCcdMode::kAnyHit) stop_ = true;
-  }
-
   void vertex_face(int v, int t) {
-    if (stop_) return;
+    if (stopped()) return;
     const Triangle& f = mesh_.triangles()[t];
-    record(ccd::vertex_face_ccd(x0_[v], x0_[f[0]], x0_[f[1]], x0_[f[2]], x1_[v], x1_[f[0]], x1_[f[1]],
-                                x1_[f[2]], options_.kernel),
-           FeatureKind::kVertexFace, v, t);
+    hits_.record(ccd::vertex_face_ccd(x0_[v], x0_[f[0]], x0_[f[1]], x0_[f[2]], x1_[v], x1_[f[0]], x1_[f[1]],
+                                      x1_[f[2]], options_.kernel),
+                 {FeatureKind::kVertexFace, v, t, 1.0});
   }
 
   void edge_edge(int e, int g) {
-    if (stop_) return;
+    if (stopped()) return;
     if (e > g) std::swap(e, g);
     const Edge& a = mesh_.edges()[e];
     const Edge& b = mesh_.edges()[g];
-    record(ccd::edge_edge_ccd(x0_[a[0]], x0_[a[1]], x0_[b[0]], x0_[b[1]], x1_[a[0]], x1_[a[1]], x1_[b[0]],
-                              x1_[b[1]], options_.kernel),
-           FeatureKind::kEdgeEdge, e, g);
+    hits_.record(ccd::edge_edge_ccd(x0_[a[0]], x0_[a[1]], x0_[b[0]], x0_[b[1]], x1_[a[0]], x1_[a[1]], x1_[b[0]],
+                                    x1_[b[1]], options_.kernel),
+                 {FeatureKind::kEdgeEdge, e, g, 1.0});
   }
 
   /// The colliding triangle pairs: every non-adjacent pair containing a feature that hit,
   /// at the earliest of its features' times.
   std::vector<TrianglePairContact> pairs_from_features() const {
-    std::map<std::pair<int, int>, double> earliest;
-    const auto add = [&](int t, int u, double toi) {
-      if (mesh_.adjacent(t, u)) return;
-      const auto key = std::make_pair(std::min(t, u), std::max(t, u));
-      const auto [it, inserted] = earliest.emplace(key, toi);
-      if (!inserted) it->second = std::min(it->second, toi);
-    };
-    for (const FeatureContact& c : feature_hits_) {
-      if (c.kind == FeatureKind::kVertexFace) {
-        for (const int* t = mesh_.triangles_of_vertex_begin(c.first); t != mesh_.triangles_of_vertex_end(c.first); ++t) {
-          add(*t, c.second, c.toi);
-        }
-      } else {
-        for (const int* t = mesh_.triangles_of_edge_begin(c.first); t != mesh_.triangles_of_edge_end(c.first); ++t) {
-          for (const int* u = mesh_.triangles_of_edge_begin(c.second); u != mesh_.triangles_of_edge_end(c.second); ++u) {
-            add(*t, *u, c.toi);
-          }
-        }
-      }
+    EarliestPerKey<std::pair<int, int>> earliest;
+    for (const FeatureContact& c : hits_.hits()) {
+      for_each_triangle_pair_of(c.kind, mesh_, c.first, mesh_, c.second, [&](int t, int u) {
+        if (!mesh_.adjacent(t, u)) earliest.add({std::min(t, u), std::max(t, u)}, c.toi);
+      });
     }
     std::vector<TrianglePairContact> pairs;
-    for (const auto& [key, toi] : earliest) pairs.push_back({key.first, key.second, toi});
+    for (const auto& [key, toi] : earliest.earliest()) pairs.push_back({key.first, key.second, toi});
     return pairs;
   }
 
@@ -273,9 +260,8 @@ class StepContext {
   LazyBoxes<Aabb> subspace_boxes_;
   LazyBoxes<Sweep> node_sweeps_;
   LazyBoxes<Sweep> triangle_sweeps_;  // by position in the BVH's triangle order
-  std::vector<FeatureContact> feature_hits_;
+  FeatureHits<FeatureContact> hits_;
   SelfCcdStats stats_;
-  bool stop_ = false;
 };
 
 /// Self-traversal (SSCC paper, Algorithm 1): intra(n) tests the node against itself,
@@ -325,13 +311,7 @@ class Traversal {
           [&](int i, int j) { context_.test_triangle_pair(i, j); });
       return;
     }
-    // Descend the node with more triangles (a leaf never descends).
-    const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >=
-                                                                nb.triangle_end - nb.triangle_begin);
-    const SubspaceBvh::Node& split = split_a ? na : nb;
-    for (int c = split.first_child; c < split.first_child + split.child_count; ++c) {
-      split_a ? inter(c, b) : inter(a, c);
-    }
+    descend_larger(bvh_, a, bvh_, b, [&](int x, int y) { inter(x, y); });
   }
 
  private:
@@ -402,9 +382,15 @@ class DiscreteContext {
 
 }  // namespace
 
+SelfCcd::SelfCcd(const SubspaceBvh& bvh) : SelfCcd(std::make_shared<const SubspaceBvh>(bvh)) {}
+
 SelfCcd::SelfCcd(const SubspaceBvh& bvh, const Certificates& certificates)
-    : bvh_(bvh), certificates_(&certificates) {
-  certificates.check_belongs_to(bvh);
+    : SelfCcd(std::make_shared<const SubspaceBvh>(bvh), std::make_shared<const Certificates>(certificates)) {}
+
+SelfCcd::SelfCcd(std::shared_ptr<const SubspaceBvh> bvh, std::shared_ptr<const Certificates> certificates)
+    : bvh_(std::move(bvh)), certificates_(std::move(certificates)) {
+  if (!bvh_) throw std::invalid_argument("SelfCcd: no hierarchy");
+  if (certificates_) certificates_->check_belongs_to(*bvh_);
 }
 
 namespace {
@@ -433,20 +419,20 @@ SelfCcdReport root_certified_report(std::chrono::steady_clock::time_point start)
 SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                              const SelfCcdOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  const Certificates* certificates = usable(certificates_, options);
-  const Eigen::VectorXd q_hat0 = bvh_.model().scaled_coordinates(q0);
-  const Eigen::VectorXd q_hat1 = bvh_.model().scaled_coordinates(q1);
+  const Certificates* certificates = usable(certificates_.get(), options);
+  const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
+  const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   const double s = std::max(q_hat0.stableNorm(), q_hat1.stableNorm());
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
-  StepContext context(bvh_, q_hat0, q_hat1, s, options);
-  Traversal<StepContext>(bvh_, context, certificates, s).intra(0);
+  StepContext context(*bvh_, q_hat0, q_hat1, s, options);
+  Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
 
 SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
                                        const SelfCcdOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  const int vertices = bvh_.model().mesh().vertex_count();
+  const int vertices = bvh_->model().mesh().vertex_count();
   for (const auto* x : {&x0, &x1}) {
     if (static_cast<int>(x->size()) != vertices) {
       throw std::invalid_argument("SelfCcd::query_positions: " + std::to_string(x->size()) +
@@ -461,29 +447,29 @@ SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, c
   }
   SelfCcdOptions refit = options;
   refit.bounds = NodeBounds::kRefit;
-  StepContext context(bvh_, x0, x1, refit);
-  Traversal<StepContext>(bvh_, context, nullptr, 0.0).intra(0);
+  StepContext context(*bvh_, x0, x1, refit);
+  Traversal<StepContext>(*bvh_, context, nullptr, 0.0).intra(0);
   return context.finish(start);
 }
 
 SelfCcdReport SelfCcd::query_discrete(const Eigen::VectorXd& q, const SelfCcdOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  const Certificates* certificates = usable(certificates_, options);
-  const Eigen::VectorXd q_hat = bvh_.model().scaled_coordinates(q);
+  const Certificates* certificates = usable(certificates_.get(), options);
+  const Eigen::VectorXd q_hat = bvh_->model().scaled_coordinates(q);
   const double s = q_hat.stableNorm();
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
-  DiscreteContext context(bvh_, q_hat, s, options);
-  Traversal<DiscreteContext>(bvh_, context, certificates, s).intra(0);
+  DiscreteContext context(*bvh_, q_hat, s, options);
+  Traversal<DiscreteContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
 
 SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                                         const SelfCcdOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  const Eigen::VectorXd q_hat0 = bvh_.model().scaled_coordinates(q0);
-  const Eigen::VectorXd q_hat1 = bvh_.model().scaled_coordinates(q1);
-  StepContext context(bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options);
-  const int n = bvh_.model().mesh().triangle_count();
+  const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
+  const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
+  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options);
+  const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
     for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);
   }

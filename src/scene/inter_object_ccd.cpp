@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <tuple>
 
+#include "query/descent.hpp"
 #include "sscc/ccd/kernels.hpp"
 
 namespace sscc::detail {
@@ -26,7 +26,7 @@ Aabb swept_box(const Sweep& s) { return hull(s.start, s.end); }
 
 InterObjectCcd::InterObjectCcd(ObjectMotion& a, int object_a, ObjectMotion& b, int object_b,
                                const SceneOptions& options)
-    : a_(a), b_(b), object_a_(object_a), object_b_(object_b), options_(options) {}
+    : a_(a), b_(b), object_a_(object_a), object_b_(object_b), options_(options), hits_(options.mode) {}
 
 bool InterObjectCcd::roots_meet() {
   ++box_tests_;
@@ -38,13 +38,13 @@ void InterObjectCcd::run() { traverse(0, 0); }
 void InterObjectCcd::run_exhaustive() {
   const int na = a_.mesh().triangle_count();
   const int nb = b_.mesh().triangle_count();
-  for (int i = 0; i < na && !stop_; ++i) {
-    for (int j = 0; j < nb && !stop_; ++j) test_triangle_pair(i, j);
+  for (int i = 0; i < na && !stopped(); ++i) {
+    for (int j = 0; j < nb && !stopped(); ++j) test_triangle_pair(i, j);
   }
 }
 
 void InterObjectCcd::traverse(int node_a, int node_b) {
-  if (stop_) return;
+  if (stopped()) return;
   ++box_tests_;
   if (!sweeps_may_touch(a_.node_sweep(node_a), b_.node_sweep(node_b), separation())) return;
   const SubspaceBvh::Node& na = a_.bvh().nodes()[node_a];
@@ -56,16 +56,11 @@ void InterObjectCcd::traverse(int node_a, int node_b) {
         [&](int i, int j) { test_triangle_pair(i, j); });
     return;
   }
-  const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >=
-                                                              nb.triangle_end - nb.triangle_begin);
-  const SubspaceBvh::Node& split = split_a ? na : nb;
-  for (int c = split.first_child; c < split.first_child + split.child_count; ++c) {
-    split_a ? traverse(c, node_b) : traverse(node_a, c);
-  }
+  descend_larger(a_.bvh(), node_a, b_.bvh(), node_b, [&](int x, int y) { traverse(x, y); });
 }
 
 void InterObjectCcd::test_triangle_pair(int i, int j) {
-  if (stop_) return;
+  if (stopped()) return;
   const Sweep& sweep_a = a_.triangle_sweep(i);
   const Sweep& sweep_b = b_.triangle_sweep(j);
   if (!sweeps_may_touch(sweep_a, sweep_b, separation())) return;
@@ -96,54 +91,37 @@ void InterObjectCcd::test_triangle_pair(int i, int j) {
 
 void InterObjectCcd::vertex_face(ObjectMotion& vertex_side, int object_v, int v, ObjectMotion& face_side, int object_f,
                                  int f) {
-  if (stop_) return;
-  ++kernel_calls_;
+  if (stopped()) return;
   const Triangle& t = face_side.mesh().triangles()[f];
-  const ccd::CcdResult r = ccd::vertex_face_ccd(vertex_side.start(v), face_side.start(t[0]), face_side.start(t[1]),
-                                                face_side.start(t[2]), vertex_side.end(v), face_side.end(t[0]),
-                                                face_side.end(t[1]), face_side.end(t[2]), options_.kernel);
-  if (!r.hit) return;
-  features_.push_back({FeatureKind::kVertexFace, object_v, v, object_f, f, r.toi});
-  if (options_.mode == SelfCcdMode::kAnyHit) stop_ = true;
+  hits_.record(ccd::vertex_face_ccd(vertex_side.start(v), face_side.start(t[0]), face_side.start(t[1]),
+                                    face_side.start(t[2]), vertex_side.end(v), face_side.end(t[0]),
+                                    face_side.end(t[1]), face_side.end(t[2]), options_.kernel),
+               {FeatureKind::kVertexFace, object_v, v, object_f, f, 1.0});
 }
 
 void InterObjectCcd::edge_edge(int e, int g) {
-  if (stop_) return;
-  ++kernel_calls_;
+  if (stopped()) return;
   const Edge& p = a_.mesh().edges()[e];
   const Edge& q = b_.mesh().edges()[g];
-  const ccd::CcdResult r = ccd::edge_edge_ccd(a_.start(p[0]), a_.start(p[1]), b_.start(q[0]), b_.start(q[1]),
-                                              a_.end(p[0]), a_.end(p[1]), b_.end(q[0]), b_.end(q[1]), options_.kernel);
-  if (!r.hit) return;
-  features_.push_back({FeatureKind::kEdgeEdge, object_a_, e, object_b_, g, r.toi});
-  if (options_.mode == SelfCcdMode::kAnyHit) stop_ = true;
+  hits_.record(ccd::edge_edge_ccd(a_.start(p[0]), a_.start(p[1]), b_.start(q[0]), b_.start(q[1]), a_.end(p[0]),
+                                  a_.end(p[1]), b_.end(q[0]), b_.end(q[1]), options_.kernel),
+               {FeatureKind::kEdgeEdge, object_a_, e, object_b_, g, 1.0});
 }
 
 std::vector<InterObjectContact> InterObjectCcd::contacts() const {
-  std::map<std::tuple<int, int, int, int>, double> earliest;
-  const auto add = [&](int object_x, int x, int object_y, int y, double toi) {
-    const auto key = object_x < object_y ? std::make_tuple(object_x, x, object_y, y) : std::make_tuple(object_y, y, object_x, x);
-    const auto [it, inserted] = earliest.emplace(key, toi);
-    if (!inserted) it->second = std::min(it->second, toi);
-  };
+  EarliestPerKey<std::tuple<int, int, int, int>> earliest;
   const auto mesh_of = [&](int object) -> const TriangleMesh& { return object == object_a_ ? a_.mesh() : b_.mesh(); };
-  for (const InterObjectFeature& c : features_) {
-    const TriangleMesh& first = mesh_of(c.object_first);
-    const TriangleMesh& second = mesh_of(c.object_second);
-    if (c.kind == FeatureKind::kVertexFace) {
-      for (const int* t = first.triangles_of_vertex_begin(c.first); t != first.triangles_of_vertex_end(c.first); ++t) {
-        add(c.object_first, *t, c.object_second, c.second, c.toi);
-      }
-    } else {
-      for (const int* t = first.triangles_of_edge_begin(c.first); t != first.triangles_of_edge_end(c.first); ++t) {
-        for (const int* u = second.triangles_of_edge_begin(c.second); u != second.triangles_of_edge_end(c.second); ++u) {
-          add(c.object_first, *t, c.object_second, *u, c.toi);
-        }
-      }
-    }
+  for (const InterObjectFeature& c : hits_.hits()) {
+    for_each_triangle_pair_of(c.kind, mesh_of(c.object_first), c.first, mesh_of(c.object_second), c.second,
+                              [&](int t, int u) {
+                                earliest.add(c.object_first < c.object_second
+                                                 ? std::make_tuple(c.object_first, t, c.object_second, u)
+                                                 : std::make_tuple(c.object_second, u, c.object_first, t),
+                                             c.toi);
+                              });
   }
   std::vector<InterObjectContact> result;
-  for (const auto& [key, toi] : earliest) {
+  for (const auto& [key, toi] : earliest.earliest()) {
     result.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key), toi});
   }
   return result;

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "query/feature_hits.hpp"
 #include "scene/object_motion.hpp"
 
 namespace sscc::detail {
@@ -23,14 +24,14 @@ class InterObjectCcd {
   /// Every triangle pair, no hierarchy (the reference).
   void run_exhaustive();
 
-  bool stopped() const { return stop_; }
-  const std::vector<InterObjectFeature>& features() const { return features_; }
+  bool stopped() const { return hits_.stopped(); }
+  const std::vector<InterObjectFeature>& features() const { return hits_.hits(); }
   /// The colliding triangle pairs: every pair containing a feature that hit, at the
   /// earliest of its features' times (unsorted).
   std::vector<InterObjectContact> contacts() const;
   long box_tests() const { return box_tests_; }
   long triangle_pairs() const { return triangle_pairs_; }
-  long kernel_calls() const { return kernel_calls_; }
+  long kernel_calls() const { return hits_.kernel_calls(); }
 
  private:
   /// Every cull is widened by the kernels' minimum separation.
@@ -44,9 +45,8 @@ class InterObjectCcd {
   ObjectMotion& b_;
   int object_a_, object_b_;
   const SceneOptions& options_;
-  std::vector<InterObjectFeature> features_;
-  long box_tests_ = 0, triangle_pairs_ = 0, kernel_calls_ = 0;
-  bool stop_ = false;
+  FeatureHits<InterObjectFeature> hits_;
+  long box_tests_ = 0, triangle_pairs_ = 0;
 };
 
 }  // namespace sscc::detail

@@ -12,14 +12,11 @@
 
 #include "common/finite.hpp"
 #include "scene/inter_object_ccd.hpp"
+#include "sscc/common/timing.hpp"
 
 namespace sscc {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 void check_frame(const RigidFrame& frame, int object) {
   const std::string where = "Scene::step: object " + std::to_string(object) + ": ";
@@ -35,13 +32,19 @@ void check_frame(const RigidFrame& frame, int object) {
 
 bool is_static(const ObjectStep& s) { return s.q0 == s.q1 && s.frame0 == s.frame1; }
 
+/// The earliest time of impact over the objects' self contacts and the contacts between
+/// objects (1 when nothing collided).
+double earliest_toi(const SceneReport& report) {
+  double earliest = 1.0;
+  for (const ObjectSelfResult& o : report.objects) {
+    if (o.report.collided()) earliest = std::min(earliest, o.report.earliest_toi);
+  }
+  for (const InterObjectContact& c : report.contacts) earliest = std::min(earliest, c.toi);
+  return earliest;
+}
+
 /// Keeps only what happens at the step's earliest time of impact.
 void keep_earliest(SceneReport& report) {
-  report.earliest_toi = 1.0;
-  for (const ObjectSelfResult& o : report.objects) {
-    if (o.report.collided()) report.earliest_toi = std::min(report.earliest_toi, o.report.earliest_toi);
-  }
-  for (const InterObjectContact& c : report.contacts) report.earliest_toi = std::min(report.earliest_toi, c.toi);
   const double t = report.earliest_toi;
   for (ObjectSelfResult& o : report.objects) {
     if (!o.report.collided() || o.report.earliest_toi == t) continue;
@@ -59,8 +62,8 @@ void keep_earliest(SceneReport& report) {
 
 void sort_inter(SceneReport& report) {
   std::sort(report.contacts.begin(), report.contacts.end(), [](const auto& x, const auto& y) {
-    return std::make_tuple(x.object_a, x.triangle_a, x.object_b, x.triangle_b) <
-           std::make_tuple(y.object_a, y.triangle_a, y.object_b, y.triangle_b);
+    return std::make_tuple(x.object_first, x.first, x.object_second, x.second) <
+           std::make_tuple(y.object_first, y.first, y.object_second, y.second);
   });
   std::sort(report.features.begin(), report.features.end(), [](const auto& x, const auto& y) {
     return std::make_tuple(x.kind, x.object_first, x.first, x.object_second, x.second) <
@@ -76,7 +79,7 @@ bool SceneReport::collided() const {
 }
 
 int Scene::add_object(const SelfCcd& detector, SceneObjectOptions options) {
-  objects_.push_back({&detector, options});
+  objects_.push_back({detector, options});
   return static_cast<int>(objects_.size()) - 1;
 }
 
@@ -124,14 +127,10 @@ class Motions {
 SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
   std::vector<const SelfCcd*> detectors;
-  for (const Object& o : objects_) detectors.push_back(o.detector);
+  for (const Object& o : objects_) detectors.push_back(&o.detector);
   Motions motions(detectors, steps);
   SceneReport report;
   report.objects.resize(objects_.size());
-  SelfCcdOptions self_options;
-  self_options.mode = options.mode;
-  self_options.use_certificates = options.use_certificates;
-  self_options.kernel = options.kernel;
   bool stop = false;
   const auto self_start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < objects_.size() && !stop; ++i) {
@@ -143,7 +142,7 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
       result.outcome = SelfTestOutcome::kStatic;
       ++report.stats.objects_static;
     } else {
-      result.report = objects_[i].detector->query(steps[i].q0, steps[i].q1, self_options);
+      result.report = objects_[i].detector.query(steps[i].q0, steps[i].q1, options);
       const bool certified = result.report.stats.root_certified;
       result.outcome = certified ? SelfTestOutcome::kCertified : SelfTestOutcome::kTraversed;
       ++(certified ? report.stats.objects_certified : report.stats.objects_traversed);
@@ -180,15 +179,8 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
   report.stats.inter_vertices_computed = motions.vertices_computed();
   report.stats.inter_seconds = seconds_since(inter_start);
   sort_inter(report);
-  if (options.mode == SelfCcdMode::kEarliest) {
-    keep_earliest(report);
-  } else {
-    report.earliest_toi = 1.0;
-    for (const ObjectSelfResult& o : report.objects) {
-      if (o.report.collided()) report.earliest_toi = std::min(report.earliest_toi, o.report.earliest_toi);
-    }
-    for (const InterObjectContact& c : report.contacts) report.earliest_toi = std::min(report.earliest_toi, c.toi);
-  }
+  report.earliest_toi = earliest_toi(report);
+  if (options.mode == SelfCcdMode::kEarliest) keep_earliest(report);
   report.stats.seconds = seconds_since(start);
   return report;
 }
@@ -196,7 +188,7 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
 std::vector<InterObjectContact> Scene::inter_object_exhaustive(const std::vector<ObjectStep>& steps,
                                                                const SceneOptions& options) const {
   std::vector<const SelfCcd*> detectors;
-  for (const Object& o : objects_) detectors.push_back(o.detector);
+  for (const Object& o : objects_) detectors.push_back(&o.detector);
   Motions motions(detectors, steps);
   SceneReport report;
   for (int a = 0; a < object_count(); ++a) {

@@ -70,8 +70,8 @@ std::vector<sscc::InterObjectContact> brute_force(const sscc::SubspaceModel& mod
     }
   }
   std::sort(contacts.begin(), contacts.end(), [](const auto& x, const auto& y) {
-    return std::make_tuple(x.object_a, x.triangle_a, x.object_b, x.triangle_b) <
-           std::make_tuple(y.object_a, y.triangle_a, y.object_b, y.triangle_b);
+    return std::make_tuple(x.object_first, x.first, x.object_second, x.second) <
+           std::make_tuple(y.object_first, y.first, y.object_second, y.second);
   });
   return contacts;
 }
@@ -109,10 +109,10 @@ TEST_CASE("scene: inter-object contacts equal exhaustive and brute-force testing
       const auto expected = brute_force(f.model, steps);
       REQUIRE(r.contacts.size() == expected.size());
       for (std::size_t k = 0; k < expected.size(); ++k) {
-        CHECK(r.contacts[k].object_a == expected[k].object_a);
-        CHECK(r.contacts[k].triangle_a == expected[k].triangle_a);
-        CHECK(r.contacts[k].object_b == expected[k].object_b);
-        CHECK(r.contacts[k].triangle_b == expected[k].triangle_b);
+        CHECK(r.contacts[k].object_first == expected[k].object_first);
+        CHECK(r.contacts[k].first == expected[k].first);
+        CHECK(r.contacts[k].object_second == expected[k].object_second);
+        CHECK(r.contacts[k].second == expected[k].second);
         CHECK(std::abs(r.contacts[k].toi - expected[k].toi) <= sscc::ccd::kDefaultToiTolerance);
       }
       // Self contacts are each object's own query.
@@ -203,7 +203,7 @@ TEST_CASE("scene: per-object switches, bad input, concurrent steps", "[scene]") 
   const sscc::SceneReport r = scene.step(steps);
   CHECK(r.objects[1].outcome == sscc::SelfTestOutcome::kSwitchedOff);
   CHECK(r.stats.object_pairs == 1);
-  for (const auto& c : r.contacts) CHECK((c.object_a == 0 && c.object_b == 1));
+  for (const auto& c : r.contacts) CHECK((c.object_first == 0 && c.object_second == 1));
 
   std::vector<sscc::SceneReport> concurrent(2);
   std::thread other([&] { concurrent[0] = scene.step(steps); });

@@ -103,15 +103,12 @@ void epsilon_plot(const std::vector<EpsilonRow>& rows, double traditional_self_m
          << static_cast<double>(r.certified) / std::max(1L, r.object_steps) << '\n';
   }
   file.close();
-  std::ostringstream g;
-  g << "set terminal pngcairo size 1100,450\nset output '" << dir << "/bench_epsilon.png'\n"
-    << "set datafile separator ','\nset multiplot layout 1,2\nset logscale x\nset xlabel 'certificate epsilon'\n"
-    << "set title 'Precomputation (16-bunny model)'\nset ylabel 's'\n"
-    << "plot '" << csv << "' using 1:2 skip 1 with linespoints lw 2 title 'precompute time'\n"
-    << "set title 'Self-collision speedup over traditional (same run)'\nset ylabel 'x'\n"
-    << "plot '" << csv << "' using 1:6 skip 1 with linespoints lw 2 title 'speedup'\n"
-    << "unset multiplot\n";
-  render_plot(g.str(), dir + "/bench_epsilon.gnuplot", dir + "/bench_epsilon.png", progress);
+  Figure figure{dir + "/bench_epsilon.png", 1100, 450, {}};
+  figure.panels.push_back({"Precomputation (16-bunny model)", "certificate epsilon", "s", "", true, false, "top left",
+                           {{csv, 1, "2", "precompute time"}}});
+  figure.panels.push_back({"Self-collision speedup over traditional (same run)", "certificate epsilon", "x", "", true,
+                           false, "top left", {{csv, 1, "6", "speedup"}}});
+  render_figure(figure, progress);
 }
 
 void tolerance_plot(const std::vector<ToleranceTiming>& rows, const std::string& dir, std::ostream& progress) {
@@ -120,13 +117,15 @@ void tolerance_plot(const std::vector<ToleranceTiming>& rows, const std::string&
   file << "tolerance,vertex_face_us,edge_edge_us\n";
   for (const ToleranceTiming& t : rows) file << t.tolerance << ',' << t.vertex_face_us << ',' << t.edge_edge_us << '\n';
   file.close();
-  std::ostringstream g;
-  g << "set terminal pngcairo size 700,450\nset output '" << dir << "/bench_toi_tolerance.png'\n"
-    << "set datafile separator ','\nset logscale x\nset xlabel 'time-of-impact tolerance'\n"
-    << "set ylabel 'mean time per query (us)'\nset title 'Kernels: run time against time-of-impact error'\n"
-    << "plot '" << csv << "' using 1:2 skip 1 with linespoints lw 2 title 'vertex-face', '' using 1:3 skip 1 "
-    << "with linespoints lw 2 title 'edge-edge'\n";
-  render_plot(g.str(), dir + "/bench_toi_tolerance.gnuplot", dir + "/bench_toi_tolerance.png", progress);
+  const PlotPanel panel{"Kernels: run time against time-of-impact error",
+                        "time-of-impact tolerance",
+                        "mean time per query (us)",
+                        "",
+                        true,
+                        false,
+                        "top left",
+                        {{csv, 1, "2", "vertex-face"}, {csv, 1, "3", "edge-edge"}}};
+  render_figure({dir + "/bench_toi_tolerance.png", 700, 450, {panel}}, progress);
 }
 
 SceneRun bench_scene(const std::string& scene, const BenchOptions& o, bool discrete, std::ostream& progress) {

@@ -10,6 +10,7 @@
 #include "basis_command.hpp"
 #include "demo/spring_mesh.hpp"
 #include "sscc/basis/modal_analysis.hpp"
+#include "sscc/common/timing.hpp"
 #include "sscc/mesh/mesh_io.hpp"
 #include "sscc/model/basis_io.hpp"
 
@@ -43,10 +44,6 @@ std::string read_text(const std::string& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace

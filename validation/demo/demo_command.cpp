@@ -14,28 +14,31 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The path of the demo's output file `name` (demo_<scene>_<name>).
+std::string output_path(const DemoOptions& demo, const std::string& name) {
+  return demo.output_dir + "/demo_" + demo.run.scene + "_" + name;
+}
+
 void write_time_plot(const DemoOptions& demo, const std::vector<double>& sscc, const std::vector<double>& traditional,
                      std::ostream& progress) {
-  const std::string& scene = demo.run.scene;
-  const std::string csv = demo.output_dir + "/demo_" + scene + "_time_per_step.csv";
+  const std::string csv = output_path(demo, "time_per_step.csv");
   std::ofstream file(csv);
   file << "step,sscc_ms,traditional_ms\n";
   for (std::size_t k = 0; k < sscc.size(); ++k) file << k << ',' << sscc[k] << ',' << traditional[k] << '\n';
   file.close();
-  const std::string png = demo.output_dir + "/demo_" + scene + "_time_per_step.png";
-  std::ostringstream g;
-  g << "set terminal pngcairo size 900,500\nset output '" << png << "'\nset datafile separator ','\n"
-    << "set logscale y\nset xlabel 'time step'\nset ylabel 'CCD time per step (ms)'\n"
-    << "set title 'Continuous collision detection per step, " << scene << " scene'\nset key top left\n"
-    << "plot '" << csv << "' using 1:3 skip 1 with lines lw 2 title 'traditional (swept-box BVH)', '" << csv
-    << "' using 1:2 skip 1 with lines lw 2 title 'SSCC (certificates)'\n";
-  render_plot(g.str(), demo.output_dir + "/demo_" + scene + "_time_per_step.gnuplot", png, progress);
+  PlotPanel panel;
+  panel.title = "Continuous collision detection per step, " + demo.run.scene + " scene";
+  panel.x_label = "time step";
+  panel.y_label = "CCD time per step (ms)";
+  panel.log_y = true;
+  panel.series = {{csv, 1, "3", "traditional (swept-box BVH)", "lines lw 2"},
+                  {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}};
+  render_figure({output_path(demo, "time_per_step.png"), 900, 500, {panel}}, progress);
 }
 
 void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Certificates& certificates,
                        std::ostream& progress) {
-  const std::string& scene = demo.run.scene;
-  const std::string csv = demo.output_dir + "/demo_" + scene + "_radius_per_level.csv";
+  const std::string csv = output_path(demo, "radius_per_level.csv");
   std::ostringstream levels;
   print_radius_per_level(bvh, certificates, levels);
   std::ofstream file(csv);
@@ -51,15 +54,13 @@ void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Ce
     }
   }
   file.close();
-  const std::string png = demo.output_dir + "/demo_" + scene + "_radius_per_level.png";
-  std::ostringstream g;
-  g << "set terminal pngcairo size 700,500\nset output '" << png << "'\nset datafile separator ','\n"
-    << "set xlabel 'tree level (0: root)'\nset ylabel 'certificate radius ||q||_M'\nset logscale y\n"
-    << "set title 'Certificate radius per tree level, " << scene << " scene'\nset key top left\n"
-    << "plot '" << csv << "' using 1:2 skip 1 with linespoints lw 2 title 'min', '" << csv
-    << "' using 1:3 skip 1 with linespoints lw 2 title 'median', '" << csv
-    << "' using 1:4 skip 1 with linespoints lw 2 title 'max'\n";
-  render_plot(g.str(), demo.output_dir + "/demo_" + scene + "_radius_per_level.gnuplot", png, progress);
+  PlotPanel panel;
+  panel.title = "Certificate radius per tree level, " + demo.run.scene + " scene";
+  panel.x_label = "tree level (0: root)";
+  panel.y_label = "certificate radius ||q||_M";
+  panel.log_y = true;
+  panel.series = {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}};
+  render_figure({output_path(demo, "radius_per_level.png"), 700, 500, {panel}}, progress);
 }
 
 }  // namespace

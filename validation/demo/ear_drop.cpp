@@ -27,11 +27,10 @@ double enclosed_volume(const TriangleMesh& mesh) {
 }
 
 EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& options)
-    : model_(model), mass_(mass), options_(options), rng_(options.motion.seed) {
+    : DemoScene(model, mass, options.motion), options_(options) {
   const TriangleMesh& mesh = model.mesh();
-  const Aabb box = mesh.bounding_box();
-  const Eigen::Vector3d& lo = box.lo;
-  const Eigen::Vector3d& hi = box.hi;
+  const Eigen::Vector3d& lo = rest_box_.lo;
+  const Eigen::Vector3d& hi = rest_box_.hi;
   lowest_ = lo.y();
   const double height = hi.y() - lo.y();
   for (int v = 0; v < mesh.vertex_count(); ++v) {
@@ -39,15 +38,14 @@ EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& 
     if (y <= lo.y() + kContactBand * height) bottom_.push_back(v);
     if (y >= lo.y() + 0.5 * height) upper_.push_back(v);
   }
-  const Eigen::VectorXd omega_squared = 2.0 * model.weights();
   const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(options.motion.objects))));
-  const double pitch = options.spacing * (hi - lo).maxCoeff();
+  const double spacing = pitch(options.spacing);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
-    Body body{ModalDynamics(omega_squared, options.motion.damping_ratio, options.motion.dt), {}, 0.0, false, 0.0};
+    Body body{modes_at_rest(), {}, 0.0, false, 0.0};
     body.frame.rotation = Eigen::AngleAxisd(2 * M_PI * uniform(rng_), Eigen::Vector3d::UnitY()).toRotationMatrix();
     const double drop = options.drop_height_min + (options.drop_height_max - options.drop_height_min) * uniform(rng_);
-    body.frame.translation = Eigen::Vector3d(pitch * (i % side), drop - lowest_, pitch * (i / side));
+    body.frame.translation = Eigen::Vector3d(spacing * (i % side), drop - lowest_, spacing * (i / side));
     bodies_.push_back(body);
   }
 }
@@ -69,7 +67,7 @@ std::vector<ObjectStep> EarDrop::step() {
         const double speed = -b.vertical_velocity;
         // The ground's impulse, upward in the body frame (the yaw keeps y up).
         b.modes.add_impulse(modal_impulse(model_, bottom_, Eigen::Vector3d(0, mass_ * (1 + options_.restitution) * speed, 0)));
-        ++impacts_;
+        ++events_;
         b.vertical_velocity = options_.restitution * speed;
         if (b.vertical_velocity < kRestSpeed) {
           b.resting = true;
@@ -88,7 +86,7 @@ std::vector<ObjectStep> EarDrop::step() {
       }
       const Eigen::Vector3d direction = Eigen::Vector3d(uniform(rng_) - 0.5, 0.0, uniform(rng_) - 0.5).normalized();
       b.modes.add_impulse(modal_impulse(model_, patch, mass_ / 20.0 * options_.strike_speed * direction));
-      ++impacts_;
+      ++events_;
       b.next_strike = time_ + options_.strike_wait_min +
                       (options_.strike_wait_max - options_.strike_wait_min) * uniform(rng_);
     }

@@ -13,9 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "demo/modal_dynamics.hpp"
-#include "sscc/model/subspace_model.hpp"
-#include "sscc/scene/scene.hpp"
+#include "demo/demo_scene.hpp"
 
 namespace sscc::validation {
 
@@ -31,15 +29,12 @@ struct EarDropOptions {
   double gravity = 9.81;          ///< m/s^2
 };
 
-class EarDrop {
+/// Events: landings and strikes.
+class EarDrop : public DemoScene {
  public:
   /// `mass`: the body's mass (kg); the basis must be the modal one (weights omega^2 / 2).
   EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& options);
-
-  /// Advances every object one step and returns their motions over it.
-  std::vector<ObjectStep> step();
-  /// Landings and strikes so far.
-  int impacts() const { return impacts_; }
+  std::vector<ObjectStep> step() override;
 
  private:
   struct Body {
@@ -50,16 +45,11 @@ class EarDrop {
     double next_strike = 0.0;  ///< s
   };
 
-  const SubspaceModel& model_;
-  double mass_;
   EarDropOptions options_;
-  std::mt19937_64 rng_;
   std::vector<Body> bodies_;
   std::vector<int> bottom_;  ///< the vertices that touch the ground on landing
   std::vector<int> upper_;   ///< candidates for strike points
   double lowest_ = 0.0;      ///< rest mesh's lowest y
-  double time_ = 0.0;
-  int impacts_ = 0;
 };
 
 /// The volume a closed surface encloses (divergence theorem; approximate for open ones).

@@ -11,6 +11,7 @@
 #include "demo/spring_scene.hpp"
 #include "fcl_self_ccd.hpp"
 #include "sscc/scene/scene.hpp"
+#include "statistics.hpp"
 
 namespace sscc::validation {
 
@@ -73,12 +74,7 @@ double MethodTimes::mean() const {
   return ms.empty() ? 0.0 : s / static_cast<double>(ms.size());
 }
 
-double MethodTimes::median() const {
-  if (ms.empty()) return 0.0;
-  std::vector<double> v = ms;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
+double MethodTimes::median() const { return validation::median(ms); }
 
 double MethodTimes::max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
 
@@ -121,19 +117,18 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   for (int i = 0; i < run.objects; ++i) scene.add_object(detector);
   const double mass = material.density * enclosed_volume(model.mesh());
   const double damping = o.damping_ratio.value_or(p.damping_ratio);
-  std::unique_ptr<EarDrop> drop;
-  std::unique_ptr<SpringScene> spring;
+  std::unique_ptr<DemoScene> motion_source;
   const SceneMotionOptions motion{run.objects, o.dt, damping, o.seed};
   if (p.spring_motion) {
     SpringSceneOptions s;
     s.motion = motion;
-    spring = std::make_unique<SpringScene>(model, mass, s);
+    motion_source = std::make_unique<SpringScene>(model, mass, s);
   } else {
     EarDropOptions d;
     d.motion = motion;
-    drop = std::make_unique<EarDrop>(model, mass, d);
+    motion_source = std::make_unique<EarDrop>(model, mass, d);
   }
-  const std::function<std::vector<ObjectStep>()> next = [&] { return spring ? spring->step() : drop->step(); };
+  const std::function<std::vector<ObjectStep>()> next = [&] { return motion_source->step(); };
   progress << "scene " << o.scene << ": " << run.objects << " objects x " << o.steps << " steps of " << o.dt
            << " s; " << model.mesh().triangle_count() << " triangles, " << model.mode_count()
            << " modes; root certificate radius " << run.assets.certificates->node_radius(0) << '\n';
@@ -185,7 +180,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
                << std::flush;
     }
   }
-  run.impacts = spring ? spring->strikes() : drop->impacts();
+  run.impacts = motion_source->events();
 
   if (!sampled.empty()) {
     FclSelfCcd fcl(model.mesh());

@@ -30,11 +30,10 @@ Eigen::VectorXd compression(const SubspaceModel& model, const std::vector<int>& 
 }  // namespace
 
 SpringScene::SpringScene(const SubspaceModel& model, double mass, const SpringSceneOptions& options)
-    : model_(model), mass_(mass), options_(options), rng_(options.motion.seed) {
+    : DemoScene(model, mass, options.motion), options_(options) {
   const TriangleMesh& mesh = model.mesh();
-  const Aabb box = mesh.bounding_box();
-  const Eigen::Vector3d& lo = box.lo;
-  const Eigen::Vector3d& hi = box.hi;
+  const Eigen::Vector3d& lo = rest_box_.lo;
+  const Eigen::Vector3d& hi = rest_box_.hi;
   const double height = hi.z() - lo.z();
   std::vector<int> bottom;
   for (int v = 0; v < mesh.vertex_count(); ++v) {
@@ -42,14 +41,13 @@ SpringScene::SpringScene(const SubspaceModel& model, double mass, const SpringSc
     if (mesh.vertices()[v].z() <= lo.z() + kEndBand * height) bottom.push_back(v);
   }
   const Eigen::VectorXd held = compression(model, top_, bottom, options.initial_compression * height);
-  const Eigen::VectorXd omega_squared = 2.0 * model.weights();
-  const double pitch = options.spacing * (hi - lo).maxCoeff();
+  const double spacing = pitch(options.spacing);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
-    Spring s{ModalDynamics(omega_squared, options.motion.damping_ratio, options.motion.dt), {},
+    Spring s{modes_at_rest(), {},
              options.strike_interval * (0.5 + 0.5 * uniform(rng_))};
     s.modes.hold_at(held);
-    s.frame.translation = Eigen::Vector3d(pitch * i, 0.0, 0.0);
+    s.frame.translation = Eigen::Vector3d(spacing * i, 0.0, 0.0);
     springs_.push_back(s);
   }
 }
@@ -58,7 +56,7 @@ void SpringScene::strike(Spring& s) {
   std::uniform_real_distribution<double> uniform(options_.strike_speed_min, options_.strike_speed_max);
   // Down onto the top coil, which passes the blow down the spring.
   s.modes.add_impulse(modal_impulse(model_, top_, Eigen::Vector3d(0, 0, -mass_ * uniform(rng_))));
-  ++strikes_;
+  ++events_;
 }
 
 std::vector<ObjectStep> SpringScene::step() {

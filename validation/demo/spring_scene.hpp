@@ -12,17 +12,15 @@
 #include <random>
 #include <vector>
 
-#include "demo/modal_dynamics.hpp"
-#include "sscc/model/subspace_model.hpp"
-#include "sscc/scene/scene.hpp"
+#include "demo/demo_scene.hpp"
 
 namespace sscc::validation {
 
 struct SpringSceneOptions {
   SceneMotionOptions motion;
   /// The shortening at release, a fraction of the height: the coils stand half a pitch
-  /// minus two tube radii apart (44% of the half pitch for the default shape), so 0.3 keeps
-  /// them apart at release and lets the released motion bring some together.
+  /// minus two tube radii apart (44% of the half pitch for the default shape), so the default
+  /// 0.25 keeps them apart at release and lets the released motion bring some together.
   double initial_compression = 0.25;
   double strike_speed_min = 7.0;  ///< m/s
   double strike_speed_max = 12.0;
@@ -30,12 +28,12 @@ struct SpringSceneOptions {
   double spacing = 1.3;           ///< side-by-side pitch, in units of the spring's largest extent
 };
 
-class SpringScene {
+/// Events: strikes.
+class SpringScene : public DemoScene {
  public:
   /// The basis must be the modal one (weights omega^2 / 2), the mesh's axis z; mass in kg.
   SpringScene(const SubspaceModel& model, double mass, const SpringSceneOptions& options);
-  std::vector<ObjectStep> step();
-  int strikes() const { return strikes_; }
+  std::vector<ObjectStep> step() override;
 
  private:
   struct Spring {
@@ -45,14 +43,9 @@ class SpringScene {
   };
   void strike(Spring& s);
 
-  const SubspaceModel& model_;
-  double mass_;
   SpringSceneOptions options_;
-  std::mt19937_64 rng_;
   std::vector<int> top_;  ///< the vertices a strike hits
   std::vector<Spring> springs_;
-  double time_ = 0.0;
-  int strikes_ = 0;
 };
 
 }  // namespace sscc::validation

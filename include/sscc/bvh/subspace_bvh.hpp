@@ -48,7 +48,8 @@ class SubspaceBvh {
     bool is_leaf() const { return first_child < 0; }
   };
 
-  /// Builds the hierarchy; `seed` makes the k-means seeding reproducible.
+  /// Builds the hierarchy; `seed` makes the k-means seeding reproducible. The hierarchy
+  /// holds the model (a handle sharing its data), so a temporary model is fine.
   explicit SubspaceBvh(const SubspaceModel& model, std::uint64_t seed = 1);
 
   const SubspaceModel& model() const { return model_; }
@@ -83,7 +84,7 @@ class SubspaceBvh {
   void build(int node, std::vector<int>& triangles, std::mt19937_64& rng, int depth);
   void compute_bounds(int node);
 
-  const SubspaceModel& model_;
+  SubspaceModel model_;
   std::vector<Node> nodes_;
   std::vector<int> order_;
   // Per node: rest centre c0, rest half extents h0, deviation rates d (3 each) and the

@@ -4,11 +4,13 @@
 //
 // The basis is kept scaled, U_hat = U M^(-1/2), with q_hat = M^(1/2) q, so that every bound
 // downstream is a plain 2-norm of q_hat (SSCC paper, eq. 3). Immutable once built; safe to
-// share between threads.
+// share between threads. A model is a handle: copies share the same immutable mesh and
+// basis (copying is O(1)), so whatever holds a model keeps it alive.
 #pragma once
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 #include "sscc/mesh/triangle_mesh.hpp"
@@ -23,11 +25,11 @@ class SubspaceModel {
   /// the weights are not r positive finite numbers, or any entry is not finite.
   SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis, const Eigen::VectorXd& weights);
 
-  const TriangleMesh& mesh() const { return mesh_; }
-  int mode_count() const { return static_cast<int>(weights_.size()); }
-  const Eigen::VectorXd& weights() const { return weights_; }
+  const TriangleMesh& mesh() const { return state_->mesh; }
+  int mode_count() const { return static_cast<int>(state_->weights.size()); }
+  const Eigen::VectorXd& weights() const { return state_->weights; }
   /// U M^(-1/2), 3V x r, row-major (a vertex's three rows are contiguous).
-  const RowMajorMatrix& scaled_basis() const { return scaled_basis_; }
+  const RowMajorMatrix& scaled_basis() const { return state_->scaled_basis; }
 
   /// M^(1/2) q. Throws std::invalid_argument when q has the wrong size or a NaN/infinity.
   Eigen::VectorXd scaled_coordinates(const Eigen::VectorXd& q) const;
@@ -35,15 +37,18 @@ class SubspaceModel {
   double weighted_norm(const Eigen::VectorXd& q) const;
   /// Vertex v's position for scaled coordinates q_hat (3r flops).
   Eigen::Vector3d position(int v, const Eigen::VectorXd& q_hat) const {
-    return mesh_.vertices()[v] + scaled_basis_.middleRows<3>(3 * v) * q_hat;
+    return state_->mesh.vertices()[v] + state_->scaled_basis.middleRows<3>(3 * v) * q_hat;
   }
   /// All positions for coordinates q (not scaled).
   std::vector<Eigen::Vector3d> deformed_positions(const Eigen::VectorXd& q) const;
 
  private:
-  TriangleMesh mesh_;
-  Eigen::VectorXd weights_;
-  RowMajorMatrix scaled_basis_;
+  struct State {
+    TriangleMesh mesh;
+    Eigen::VectorXd weights;
+    RowMajorMatrix scaled_basis;
+  };
+  std::shared_ptr<const State> state_;
 };
 
 }  // namespace sscc

@@ -65,7 +65,8 @@ class PoseStepCcd {
  public:
   /// `bvh` must be built on subspace.model() (or a model with the same rest positions and
   /// basis); throws std::invalid_argument otherwise, or when the certificates belong to
-  /// another hierarchy. Keeps references to all three.
+  /// another hierarchy. Holds a copy of the subspace and a detector owning the hierarchy and
+  /// certificates, so none of the arguments needs to outlive it.
   PoseStepCcd(const PoseSubspace& subspace, const SubspaceBvh& bvh, const Certificates* certificates = nullptr);
 
   const SelfCcd& ccd() const { return ccd_; }
@@ -75,7 +76,7 @@ class PoseStepCcd {
                        const PoseStepOptions& options = {}) const;
 
  private:
-  const PoseSubspace& subspace_;
+  PoseSubspace subspace_;
   SelfCcd ccd_;
 };
 

@@ -19,10 +19,12 @@
 // The certificates' guarantee is for the exact positions; see certificates.hpp.
 //
 // A built detector is immutable; query() keeps its scratch per call and is thread-safe.
+// It owns its hierarchy, model and certificates (shared with its copies).
 #pragma once
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 #include "sscc/bvh/subspace_bvh.hpp"
@@ -109,15 +111,21 @@ struct SelfCcdReport {
   bool collided() const { return !pairs.empty(); }
 };
 
+/// A detector owns what it queries: it holds its hierarchy (and through it the model) and
+/// its certificates by shared ownership, so it stays valid whatever happens to the objects
+/// it was built from. Copies share them (copying is O(1)).
 class SelfCcd {
  public:
-  explicit SelfCcd(const SubspaceBvh& bvh) : bvh_(bvh) {}
-  /// With certificates; throws std::invalid_argument when they were computed for another
-  /// model or hierarchy.
+  /// Copies the hierarchy (the model inside it is shared, not copied).
+  explicit SelfCcd(const SubspaceBvh& bvh);
+  /// With certificates (copied); throws std::invalid_argument when they were computed for
+  /// another model or hierarchy.
   SelfCcd(const SubspaceBvh& bvh, const Certificates& certificates);
+  /// Shares a hierarchy and certificates (may be null) with other detectors, without copies.
+  explicit SelfCcd(std::shared_ptr<const SubspaceBvh> bvh, std::shared_ptr<const Certificates> certificates = nullptr);
 
-  const SubspaceBvh& bvh() const { return bvh_; }
-  const Certificates* certificates() const { return certificates_; }
+  const SubspaceBvh& bvh() const { return *bvh_; }
+  const Certificates* certificates() const { return certificates_.get(); }
 
   /// Swept-box traversal of the hierarchy (culled by the certificates), then the kernels.
   /// q0 and q1 are reduced coordinates (not scaled); wrong sizes or NaN/infinity throw
@@ -142,8 +150,8 @@ class SelfCcd {
                                  const SelfCcdOptions& options = {}) const;
 
  private:
-  const SubspaceBvh& bvh_;
-  const Certificates* certificates_ = nullptr;
+  std::shared_ptr<const SubspaceBvh> bvh_;
+  std::shared_ptr<const Certificates> certificates_;
 };
 
 }  // namespace sscc

@@ -59,11 +59,10 @@ struct ObjectStep {
   RigidFrame frame0, frame1;
 };
 
-struct SceneOptions {
-  SelfCcdMode mode = SelfCcdMode::kAllContacts;  ///< for the whole step
-  bool use_certificates = true;  ///< false: every self test is the traditional query
-  ccd::CcdOptions kernel;
-};
+/// The options of a step: those of the self queries, applied to every object's self test
+/// (mode for the whole step; use_certificates = false makes every self test the
+/// traditional query; bounds; the kernels' options, also used between objects).
+struct SceneOptions : SelfCcdOptions {};
 
 enum class SelfTestOutcome : std::uint8_t {
   kTraversed,  ///< the self query ran (partly culled by certificates, or not at all)
@@ -78,13 +77,14 @@ struct ObjectSelfResult {
   SelfCcdReport report;  ///< empty unless traversed
 };
 
-/// A colliding pair of triangles of two objects, object_a < object_b.
+/// A colliding pair of triangles of two objects: triangle `first` of `object_first` and
+/// triangle `second` of `object_second`, object_first < object_second.
 struct InterObjectContact {
-  int object_a, triangle_a, object_b, triangle_b;
+  int object_first, first, object_second, second;
   double toi;
   friend bool operator==(const InterObjectContact& x, const InterObjectContact& y) {
-    return x.object_a == y.object_a && x.triangle_a == y.triangle_a && x.object_b == y.object_b &&
-           x.triangle_b == y.triangle_b && x.toi == y.toi;
+    return x.object_first == y.object_first && x.first == y.first && x.object_second == y.object_second &&
+           x.second == y.second && x.toi == y.toi;
   }
 };
 
@@ -126,8 +126,8 @@ struct SceneReport {
 
 class Scene {
  public:
-  /// Adds an instance of a detector (kept by reference: it must outlive the scene) and
-  /// returns its index.
+  /// Adds an instance of a detector (the scene holds a copy, which shares the detector's
+  /// hierarchy and certificates) and returns its index.
   int add_object(const SelfCcd& detector, SceneObjectOptions options = {});
   int object_count() const { return static_cast<int>(objects_.size()); }
 
@@ -141,7 +141,7 @@ class Scene {
 
  private:
   struct Object {
-    const SelfCcd* detector;
+    SelfCcd detector;
     SceneObjectOptions options;
   };
   std::vector<Object> objects_;

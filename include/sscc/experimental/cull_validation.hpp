@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "sscc/certificates/certificates.hpp"
-#include "sscc/prediction/culling_predictor.hpp"
+#include "sscc/experimental/culling_predictor.hpp"
 
-namespace sscc {
+namespace sscc::experimental {
 
 struct CullCounts {
   long culled = 0;              ///< (pose, node) pairs declared free
@@ -39,4 +39,4 @@ CullValidation validate_culling(const SubspaceBvh& bvh, const Certificates& cert
                                 const CullingPredictor& predictor, const std::vector<Eigen::VectorXd>& q,
                                 const std::vector<std::vector<char>>& collisions);
 
-}  // namespace sscc
+}  // namespace sscc::experimental

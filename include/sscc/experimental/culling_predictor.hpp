@@ -36,7 +36,7 @@
 
 #include "sscc/bvh/subspace_bvh.hpp"
 
-namespace sscc {
+namespace sscc::experimental {
 
 class CullingPredictor {
  public:
@@ -64,4 +64,4 @@ class CullingPredictor {
   Eigen::VectorXd thresholds_;     // theta_n
 };
 
-}  // namespace sscc
+}  // namespace sscc::experimental

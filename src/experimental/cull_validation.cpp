@@ -1,9 +1,9 @@
-#include "sscc/prediction/cull_validation.hpp"
+#include "sscc/experimental/cull_validation.hpp"
 
 #include <stdexcept>
 #include <string>
 
-namespace sscc {
+namespace sscc::experimental {
 
 namespace {
 
@@ -51,4 +51,4 @@ CullValidation validate_culling(const SubspaceBvh& bvh, const Certificates& cert
   return result;
 }
 
-}  // namespace sscc
+}  // namespace sscc::experimental

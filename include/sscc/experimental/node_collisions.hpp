@@ -13,7 +13,7 @@
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/query/self_ccd.hpp"
 
-namespace sscc {
+namespace sscc::experimental {
 
 /// Per node (bvh.nodes() order): 1 when some reported pair has both triangles under it.
 std::vector<char> nodes_holding_pairs(const SubspaceBvh& bvh, const std::vector<TrianglePairContact>& pairs);
@@ -22,4 +22,4 @@ std::vector<char> nodes_holding_pairs(const SubspaceBvh& bvh, const std::vector<
 /// Throws std::invalid_argument for a q of the wrong size or with NaN/infinity.
 std::vector<char> colliding_nodes(const SubspaceBvh& bvh, const Eigen::VectorXd& q);
 
-}  // namespace sscc
+}  // namespace sscc::experimental

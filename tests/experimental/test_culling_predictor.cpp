@@ -3,8 +3,8 @@
 #include "basis/pose_fixtures.hpp"
 #include "sscc/basis/key_points.hpp"
 #include "sscc/ccd/kernels.hpp"
-#include "sscc/prediction/cull_validation.hpp"
-#include "sscc/prediction/node_collisions.hpp"
+#include "sscc/experimental/cull_validation.hpp"
+#include "sscc/experimental/node_collisions.hpp"
 
 namespace {
 
@@ -54,19 +54,19 @@ TEST_CASE("EXPERIMENTAL predicted culling: false culls counted beside the sound 
   const std::vector<Eigen::VectorXd> train_q = key_point_coordinates(keys, train);
   const std::vector<Eigen::VectorXd> held_q = key_point_coordinates(keys, held_out);
   std::vector<std::vector<char>> train_truth;
-  for (const Eigen::VectorXd& q : train_q) train_truth.push_back(sscc::colliding_nodes(f.bvh, q));
+  for (const Eigen::VectorXd& q : train_q) train_truth.push_back(sscc::experimental::colliding_nodes(f.bvh, q));
   std::vector<std::vector<char>> held_truth;
   for (const Eigen::VectorXd& q : held_q) {
-    held_truth.push_back(sscc::colliding_nodes(f.bvh, q));
+    held_truth.push_back(sscc::experimental::colliding_nodes(f.bvh, q));
     CHECK(held_truth.back() == brute_force_colliding_nodes(f.bvh, q));  // the ground truth itself
   }
-  const sscc::CullingPredictor predictor = sscc::CullingPredictor::fit(f.bvh, train_q, train_truth);
+  const sscc::experimental::CullingPredictor predictor = sscc::experimental::CullingPredictor::fit(f.bvh, train_q, train_truth);
   CHECK(predictor.node_count() == static_cast<int>(f.bvh.nodes().size()));
   CHECK(predictor.feature_count() == 2 * f.model.mode_count() + 1);
 
-  const sscc::CullValidation on_training = sscc::validate_culling(f.bvh, f.certificates, predictor, train_q, train_truth);
-  const sscc::CullValidation on_held_out = sscc::validate_culling(f.bvh, f.certificates, predictor, held_q, held_truth);
-  for (const sscc::CullValidation* v : {&on_training, &on_held_out}) {
+  const sscc::experimental::CullValidation on_training = sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, train_q, train_truth);
+  const sscc::experimental::CullValidation on_held_out = sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, held_q, held_truth);
+  for (const sscc::experimental::CullValidation* v : {&on_training, &on_held_out}) {
     WARN((v == &on_training ? "training" : "held-out")
          << " poses: " << v->colliding_poses << " of " << v->poses << " collide, " << v->colliding
          << " colliding (pose, node) pairs; sound certificates cull " << v->sound.culled << " with "
@@ -99,14 +99,14 @@ TEST_CASE("the culling predictor and its validation refuse inputs of the wrong s
   const CertifiedPoses f(8, 8, 3, sscc::test::pca_modes(3), 1.0);  // certificates only to be refused
   const std::vector<Eigen::VectorXd> q = {Eigen::VectorXd::Zero(3)};
   const std::vector<std::vector<char>> truth = {std::vector<char>(f.bvh.nodes().size(), 0)};
-  CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, {}, {}), Catch::Contains("no training poses"));
-  CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, q, {}), Catch::Contains("ground truths"));
-  CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, {Eigen::VectorXd::Zero(2)}, truth), Catch::Contains("finite"));
-  CHECK_THROWS_WITH(sscc::CullingPredictor::fit(f.bvh, q, {std::vector<char>(2, 0)}), Catch::Contains("per node"));
-  const sscc::CullingPredictor predictor = sscc::CullingPredictor::fit(f.bvh, q, truth);
+  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, {}, {}), Catch::Contains("no training poses"));
+  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, q, {}), Catch::Contains("ground truths"));
+  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, {Eigen::VectorXd::Zero(2)}, truth), Catch::Contains("finite"));
+  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, q, {std::vector<char>(2, 0)}), Catch::Contains("per node"));
+  const sscc::experimental::CullingPredictor predictor = sscc::experimental::CullingPredictor::fit(f.bvh, q, truth);
   CHECK_THROWS_WITH(predictor.scores(Eigen::VectorXd::Zero(5)), Catch::Contains("finite coordinates"));
   const sscc::SubspaceBvh other_tree(f.model, 2);  // another k-means seed: another hierarchy
-  CHECK_THROWS_WITH(sscc::validate_culling(other_tree, f.certificates, predictor, q, truth),
+  CHECK_THROWS_WITH(sscc::experimental::validate_culling(other_tree, f.certificates, predictor, q, truth),
                     Catch::Contains("another"));
-  CHECK_THROWS_WITH(sscc::validate_culling(f.bvh, f.certificates, predictor, q, {}), Catch::Contains("ground truths"));
+  CHECK_THROWS_WITH(sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, q, {}), Catch::Contains("ground truths"));
 }

@@ -1,4 +1,4 @@
-#include "sscc/prediction/culling_predictor.hpp"
+#include "sscc/experimental/culling_predictor.hpp"
 
 #include <Eigen/QR>
 
@@ -8,7 +8,7 @@
 
 #include "common/finite.hpp"
 
-namespace sscc {
+namespace sscc::experimental {
 
 CullingPredictor CullingPredictor::fit(const SubspaceBvh& bvh, const std::vector<Eigen::VectorXd>& training_q,
                                        const std::vector<std::vector<char>>& training_collisions) {
@@ -72,4 +72,4 @@ std::vector<char> CullingPredictor::predicted_free(const Eigen::VectorXd& q) con
   return free;
 }
 
-}  // namespace sscc
+}  // namespace sscc::experimental

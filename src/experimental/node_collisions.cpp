@@ -1,6 +1,6 @@
-#include "sscc/prediction/node_collisions.hpp"
+#include "sscc/experimental/node_collisions.hpp"
 
-namespace sscc {
+namespace sscc::experimental {
 
 std::vector<char> nodes_holding_pairs(const SubspaceBvh& bvh, const std::vector<TrianglePairContact>& pairs) {
   const std::vector<SubspaceBvh::Node>& nodes = bvh.nodes();
@@ -34,4 +34,4 @@ std::vector<char> colliding_nodes(const SubspaceBvh& bvh, const Eigen::VectorXd&
   return nodes_holding_pairs(bvh, SelfCcd(bvh).query_discrete(q, exact).pairs);
 }
 
-}  // namespace sscc
+}  // namespace sscc::experimental
