@@ -43,11 +43,12 @@ RigidFrame frame_from(py::handle object, const std::string& name) {
   return frame;
 }
 
-/// Per-object items of a sequence that must have one per object.
-std::vector<py::handle> per_object(py::handle sequence, const char* name, std::size_t objects) {
-  std::vector<py::handle> items;
-  if (sequence.is_none()) return std::vector<py::handle>(objects, py::none());
-  for (py::handle item : py::iter(sequence)) items.push_back(item);
+/// Per-object items of a sequence that must have one per object (None: None for each).
+/// Owned references: iterating an array makes each row anew.
+std::vector<py::object> per_object(py::handle sequence, const char* name, std::size_t objects) {
+  if (sequence.is_none()) return std::vector<py::object>(objects, py::none());
+  std::vector<py::object> items;
+  for (py::handle item : py::iter(sequence)) items.push_back(py::reinterpret_borrow<py::object>(item));
   if (items.size() != objects) {
     throw py::value_error(std::string(name) + ": " + std::to_string(items.size()) + " entries for " +
                           std::to_string(objects) + " objects");
