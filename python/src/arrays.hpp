@@ -14,6 +14,7 @@
 
 #include <array>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -46,6 +47,17 @@ py::array view(const T* data, std::vector<py::ssize_t> shape, std::vector<py::ss
   py::array result(py::dtype::of<T>(), std::move(shape), std::move(strides), data, owner);
   result.attr("flags").attr("writeable") = false;
   return result;
+}
+
+/// A read-only (rows, columns) view of a vector of fixed-size rows (Eigen vectors,
+/// std::arrays) owned by `owner`.
+template <typename Row>
+py::array rows_view(const std::vector<Row>& rows, py::handle owner) {
+  using Scalar = std::remove_const_t<std::remove_pointer_t<decltype(std::declval<const Row&>().data())>>;
+  constexpr py::ssize_t columns = sizeof(Row) / sizeof(Scalar);
+  static_assert(sizeof(Row) == columns * sizeof(Scalar), "rows are viewed as packed scalars");
+  return view(rows.empty() ? nullptr : rows.front().data(), {py::ssize_t(rows.size()), columns},
+              {py::ssize_t(sizeof(Row)), py::ssize_t(sizeof(Scalar))}, owner);
 }
 
 /// Hands a container over to NumPy without copying its elements (the array owns it).

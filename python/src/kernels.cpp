@@ -1,5 +1,6 @@
 // The leaf kernels: one query at a time, and vectorised over (n, 4, 3) arrays so that many
 // queries cross the language boundary once.
+#include <array>
 #include <chrono>
 #include <cstdint>
 
@@ -17,7 +18,7 @@ using Kernel = ccd::CcdResult (*)(const Eigen::Vector3d&, const Eigen::Vector3d&
                                   const Eigen::Vector3d&, const Eigen::Vector3d&, const ccd::CcdOptions&);
 
 /// A C-ordered (n, 4, 3) float64 array (copied only when the input is not one).
-CArray primitives_from(py::handle object, const char* name) {
+CArray primitives_from(py::object object, const char* name) {
   CArray array = CArray::ensure(object);
   if (!array) throw py::value_error(std::string(name) + ": expected an array of numbers");
   if (array.ndim() != 3 || array.shape(1) != 4 || array.shape(2) != 3) {
@@ -33,7 +34,7 @@ ccd::CcdResult run(Kernel kernel, const double* start, const double* end, const 
                 Point(end + 6), Point(end + 9), options);
 }
 
-py::tuple run_many(Kernel kernel, py::handle start_object, py::handle end_object, double toi_tolerance,
+py::tuple run_many(Kernel kernel, py::object start_object, py::object end_object, double toi_tolerance,
                    double minimum_separation) {
   const CArray start = primitives_from(start_object, "start");
   const CArray end = primitives_from(end_object, "end");
@@ -64,7 +65,7 @@ py::tuple run_many(Kernel kernel, py::handle start_object, py::handle end_object
   return py::make_tuple(std::move(hit), std::move(toi));
 }
 
-py::tuple run_one(Kernel kernel, const char* const names[8], const py::handle points[8], double toi_tolerance,
+py::tuple run_one(Kernel kernel, const char* const names[8], const py::object points[8], double toi_tolerance,
                   double minimum_separation) {
   Eigen::Vector3d p[8];
   for (int k = 0; k < 8; ++k) p[k] = point_from(points[k], names[k]);
@@ -75,7 +76,7 @@ py::tuple run_one(Kernel kernel, const char* const names[8], const py::handle po
 
 /// The loop run_many makes, on data already in C++ (arrays of points), timed: what the
 /// vectorised call costs without the language boundary.
-double native_loop_seconds(Kernel kernel, py::handle start_object, py::handle end_object) {
+double native_loop_seconds(Kernel kernel, py::object start_object, py::object end_object) {
   const CArray start = primitives_from(start_object, "start");
   const CArray end = primitives_from(end_object, "end");
   const std::size_t n = static_cast<std::size_t>(std::min(start.shape(0), end.shape(0)));
@@ -110,73 +111,50 @@ constexpr const char* kOptionsDoc =
     "d > 0 reports coming within distance d (conservative). With d = 0 the decision is exact for the "
     "given doubles, degenerate cases included. Raises ValueError for non-finite coordinates.";
 
+/// Binds `name` (one query, eight points named `points`) and `name`_many (n queries).
+void bind_kernel(py::module_& m, const std::string& name, Kernel kernel, const std::array<const char*, 8>& points,
+                 const std::string& doc, const std::string& many_doc) {
+  m.def(
+      name.c_str(),
+      [kernel, points](py::object p0, py::object p1, py::object p2, py::object p3, py::object p4, py::object p5,
+                       py::object p6, py::object p7, double toi_tolerance, double minimum_separation) {
+        const py::object given[8] = {p0, p1, p2, p3, p4, p5, p6, p7};
+        return run_one(kernel, points.data(), given, toi_tolerance, minimum_separation);
+      },
+      py::arg(points[0]), py::arg(points[1]), py::arg(points[2]), py::arg(points[3]), py::arg(points[4]),
+      py::arg(points[5]), py::arg(points[6]), py::arg(points[7]), py::kw_only(),
+      py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
+      (doc + " Returns (hit, toi); toi is 1.0 without a hit." + kOptionsDoc).c_str());
+  m.def(
+      (name + "_many").c_str(),
+      [kernel](py::object start, py::object end, double toi_tolerance, double minimum_separation) {
+        return run_many(kernel, start, end, toi_tolerance, minimum_separation);
+      },
+      py::arg("start"), py::arg("end"), py::kw_only(), py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
+      py::arg("minimum_separation") = 0.0,
+      (many_doc + " at t = 0 and t = 1 (float64 in C order is read in place). Returns (hit, toi): (n,) bool "
+                  "and (n,) float64 arrays, toi 1.0 where there is no hit. The loop runs without the GIL." +
+       kOptionsDoc)
+          .c_str());
+}
+
 }  // namespace
 
 void bind_kernels(py::module_& m) {
   m.attr("DEFAULT_TOI_TOLERANCE") = ccd::kDefaultToiTolerance;
-
-  m.def(
-      "vertex_face_ccd",
-      [](py::handle v0, py::handle f0, py::handle f1, py::handle f2, py::handle v1, py::handle g0, py::handle g1,
-         py::handle g2, double toi_tolerance, double minimum_separation) {
-        static const char* const names[8] = {"v0", "f0", "f1", "f2", "v1", "g0", "g1", "g2"};
-        const py::handle points[8] = {v0, f0, f1, f2, v1, g0, g1, g2};
-        return run_one(&ccd::vertex_face_ccd, names, points, toi_tolerance, minimum_separation);
-      },
-      py::arg("v0"), py::arg("f0"), py::arg("f1"), py::arg("f2"), py::arg("v1"), py::arg("g0"), py::arg("g1"),
-      py::arg("g2"), py::kw_only(), py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
-      py::arg("minimum_separation") = 0.0,
-      (std::string("Vertex-face CCD: vertex v0 -> v1 against the triangle (f0, f1, f2) -> (g0, g1, g2), "
-                   "every point moving linearly over t in [0, 1]. Returns (hit, toi); toi is 1.0 without a "
-                   "hit.") +
-       kOptionsDoc)
-          .c_str());
-
-  m.def(
-      "edge_edge_ccd",
-      [](py::handle a0, py::handle a1, py::handle b0, py::handle b1, py::handle c0, py::handle c1, py::handle d0,
-         py::handle d1, double toi_tolerance, double minimum_separation) {
-        static const char* const names[8] = {"a0", "a1", "b0", "b1", "c0", "c1", "d0", "d1"};
-        const py::handle points[8] = {a0, a1, b0, b1, c0, c1, d0, d1};
-        return run_one(&ccd::edge_edge_ccd, names, points, toi_tolerance, minimum_separation);
-      },
-      py::arg("a0"), py::arg("a1"), py::arg("b0"), py::arg("b1"), py::arg("c0"), py::arg("c1"), py::arg("d0"),
-      py::arg("d1"), py::kw_only(), py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
-      py::arg("minimum_separation") = 0.0,
-      (std::string("Edge-edge CCD: edge (a0, a1) -> (c0, c1) against edge (b0, b1) -> (d0, d1), every point "
-                   "moving linearly over t in [0, 1]. Returns (hit, toi); toi is 1.0 without a hit.") +
-       kOptionsDoc)
-          .c_str());
-
-  m.def(
-      "vertex_face_ccd_many",
-      [](py::handle start, py::handle end, double toi_tolerance, double minimum_separation) {
-        return run_many(&ccd::vertex_face_ccd, start, end, toi_tolerance, minimum_separation);
-      },
-      py::arg("start"), py::arg("end"), py::kw_only(), py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
-      py::arg("minimum_separation") = 0.0,
-      (std::string("Vertex-face CCD for n queries at once: start and end are (n, 4, 3) arrays, rows "
-                   "(vertex, f0, f1, f2) at t = 0 and t = 1 (float64 in C order is read in place). Returns "
-                   "(hit, toi): (n,) bool and (n,) float64 arrays, toi 1.0 where there is no hit. The loop "
-                   "runs without the GIL.") +
-       kOptionsDoc)
-          .c_str());
-
-  m.def(
-      "edge_edge_ccd_many",
-      [](py::handle start, py::handle end, double toi_tolerance, double minimum_separation) {
-        return run_many(&ccd::edge_edge_ccd, start, end, toi_tolerance, minimum_separation);
-      },
-      py::arg("start"), py::arg("end"), py::kw_only(), py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
-      py::arg("minimum_separation") = 0.0,
-      (std::string("Edge-edge CCD for n queries at once: start and end are (n, 4, 3) arrays, rows (a0, a1, "
-                   "b0, b1) at t = 0 and t = 1. Returns (hit, toi) arrays as vertex_face_ccd_many.") +
-       kOptionsDoc)
-          .c_str());
+  bind_kernel(m, "vertex_face_ccd", &ccd::vertex_face_ccd, {"v0", "f0", "f1", "f2", "v1", "g0", "g1", "g2"},
+              "Vertex-face CCD: vertex v0 -> v1 against the triangle (f0, f1, f2) -> (g0, g1, g2), every point "
+              "moving linearly over t in [0, 1].",
+              "Vertex-face CCD for n queries at once: start and end are (n, 4, 3) arrays, rows (vertex, f0, f1, "
+              "f2)");
+  bind_kernel(m, "edge_edge_ccd", &ccd::edge_edge_ccd, {"a0", "a1", "b0", "b1", "c0", "c1", "d0", "d1"},
+              "Edge-edge CCD: edge (a0, a1) -> (c0, c1) against edge (b0, b1) -> (d0, d1), every point moving "
+              "linearly over t in [0, 1].",
+              "Edge-edge CCD for n queries at once: start and end are (n, 4, 3) arrays, rows (a0, a1, b0, b1)");
 
   m.def(
       "triangles_intersect",
-      [](py::handle a0, py::handle a1, py::handle a2, py::handle b0, py::handle b1, py::handle b2) {
+      [](py::object a0, py::object a1, py::object a2, py::object b0, py::object b1, py::object b2) {
         return ccd::triangles_intersect(point_from(a0, "a0"), point_from(a1, "a1"), point_from(a2, "a2"),
                                         point_from(b0, "b0"), point_from(b1, "b1"), point_from(b2, "b2"));
       },
@@ -185,7 +163,7 @@ void bind_kernels(py::module_& m) {
 
   m.def(
       "_native_kernel_loop_seconds",
-      [](const std::string& kernel, py::handle start, py::handle end) {
+      [](const std::string& kernel, py::object start, py::object end) {
         return native_loop_seconds(kernel_named(kernel), start, end);
       },
       py::arg("kernel"), py::arg("start"), py::arg("end"),

@@ -16,10 +16,6 @@ namespace sscc::python {
 
 namespace {
 
-static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "vertices are viewed as (n, 3) doubles");
-static_assert(sizeof(Triangle) == 3 * sizeof(int) && sizeof(Edge) == 2 * sizeof(int),
-              "index tuples are viewed as rows of ints");
-
 bool has_vega_extension(const std::string& path) {
   if (path.size() < 2) return false;
   const std::string tail = path.substr(path.size() - 2);
@@ -33,7 +29,7 @@ void bind_meshes(py::module_& m) {
                            "A triangle mesh: vertices, triangles and their connectivity. Two triangles are "
                            "adjacent when they share a vertex; adjacent pairs are never reported as colliding. "
                            "Immutable.")
-      .def(py::init([](py::handle vertices, py::handle triangles) {
+      .def(py::init([](py::object vertices, py::object triangles) {
              return TriangleMesh(points_from(vertices, "vertices"), index_triples_from(triangles, "triangles"));
            }),
            py::arg("vertices"), py::arg("triangles"),
@@ -42,27 +38,15 @@ void bind_meshes(py::module_& m) {
            "that repeats a vertex.")
       .def_property_readonly(
           "vertices",
-          [](py::object self) {
-            const auto& v = self.cast<const TriangleMesh&>().vertices();
-            return view(v.empty() ? nullptr : v.front().data(), {py::ssize_t(v.size()), 3},
-                        {py::ssize_t(sizeof(Eigen::Vector3d)), py::ssize_t(sizeof(double))}, self);
-          },
+          [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().vertices(), self); },
           "The rest positions, (n, 3) float64, a read-only view (no copy).")
       .def_property_readonly(
           "triangles",
-          [](py::object self) {
-            const auto& t = self.cast<const TriangleMesh&>().triangles();
-            return view(t.empty() ? nullptr : t.front().data(), {py::ssize_t(t.size()), 3},
-                        {py::ssize_t(sizeof(Triangle)), py::ssize_t(sizeof(int))}, self);
-          },
+          [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().triangles(), self); },
           "The triangles' vertex indices, (m, 3) int32, a read-only view (no copy).")
       .def_property_readonly(
           "edges",
-          [](py::object self) {
-            const auto& e = self.cast<const TriangleMesh&>().edges();
-            return view(e.empty() ? nullptr : e.front().data(), {py::ssize_t(e.size()), 2},
-                        {py::ssize_t(sizeof(Edge)), py::ssize_t(sizeof(int))}, self);
-          },
+          [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().edges(), self); },
           "The unique edges as sorted vertex pairs, (e, 2) int32, a read-only view. Edge-edge feature "
           "contacts index into these rows.")
       .def_property_readonly("vertex_count", &TriangleMesh::vertex_count, "Number of vertices.")
@@ -133,7 +117,7 @@ void bind_meshes(py::module_& m) {
 
   m.def(
       "write_basis",
-      [](const std::string& path, py::handle basis) {
+      [](const std::string& path, py::object basis) {
         if (!has_vega_extension(path)) {
           throw py::value_error("write_basis: " + path + ": the name must end in .U (Vega's binary layout)");
         }

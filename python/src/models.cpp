@@ -49,7 +49,7 @@ void bind_models(py::module_& m) {
   py::class_<SubspaceModel>(m, "SubspaceModel",
                             "A reduced deformable object, x = p + U q: the mesh's rest positions p, a basis U "
                             "(3n, r) and weights w (||q||_M^2 = sum w_i q_i^2). Immutable.")
-      .def(py::init([](const TriangleMesh& mesh, py::handle basis, py::handle weights) {
+      .def(py::init([](const TriangleMesh& mesh, py::object basis, py::object weights) {
              const Eigen::MatrixXd u = matrix_from(basis, "U");
              const Eigen::VectorXd w = vector_from(weights, "weights");
              py::gil_scoped_release release;
@@ -79,11 +79,11 @@ void bind_models(py::module_& m) {
           "U M^(-1/2), (3n, r), a read-only view: the basis every bound works with.")
       .def(
           "weighted_norm",
-          [](const SubspaceModel& model, py::handle q) { return model.weighted_norm(vector_from(q, "q")); },
+          [](const SubspaceModel& model, py::object q) { return model.weighted_norm(vector_from(q, "q")); },
           py::arg("q"), "||q||_M = sqrt(sum w_i q_i^2), the norm the certificates' radii are in.")
       .def(
           "deformed_positions",
-          [](const SubspaceModel& model, py::handle q) {
+          [](const SubspaceModel& model, py::object q) {
             const Eigen::VectorXd coordinates = vector_from(q, "q");
             std::vector<Eigen::Vector3d> x;
             {

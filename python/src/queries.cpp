@@ -103,7 +103,7 @@ void bind_queries(py::module_& m) {
                              "The certificates, or None.")
       .def(
           "query",
-          [](const SelfCcd& detector, py::handle q0, py::handle q1, const std::string& mode, const std::string& bounds,
+          [](const SelfCcd& detector, py::object q0, py::object q1, const std::string& mode, const std::string& bounds,
              bool use_certificates, double toi_tolerance, double minimum_separation) {
             const Eigen::VectorXd a = vector_from(q0, "q0");
             const Eigen::VectorXd b = vector_from(q1, "q1");
@@ -121,7 +121,7 @@ void bind_queries(py::module_& m) {
               .c_str())
       .def(
           "query_positions",
-          [](const SelfCcd& detector, py::handle x0, py::handle x1, const std::string& mode, double toi_tolerance,
+          [](const SelfCcd& detector, py::object x0, py::object x1, const std::string& mode, double toi_tolerance,
              double minimum_separation) {
             const std::vector<Eigen::Vector3d> a = points_from(x0, "x0");
             const std::vector<Eigen::Vector3d> b = points_from(x1, "x1");
@@ -137,7 +137,7 @@ void bind_queries(py::module_& m) {
               .c_str())
       .def(
           "query_discrete",
-          [](const SelfCcd& detector, py::handle q, bool use_certificates) {
+          [](const SelfCcd& detector, py::object q, bool use_certificates) {
             const Eigen::VectorXd coordinates = vector_from(q, "q");
             SelfCcdOptions options;
             options.use_certificates = use_certificates;
@@ -149,7 +149,7 @@ void bind_queries(py::module_& m) {
           "features.")
       .def(
           "query_exhaustive",
-          [](const SelfCcd& detector, py::handle q0, py::handle q1, const std::string& mode, double toi_tolerance,
+          [](const SelfCcd& detector, py::object q0, py::object q1, const std::string& mode, double toi_tolerance,
              double minimum_separation) {
             const Eigen::VectorXd a = vector_from(q0, "q0");
             const Eigen::VectorXd b = vector_from(q1, "q1");
@@ -159,7 +159,11 @@ void bind_queries(py::module_& m) {
           },
           py::arg("q0"), py::arg("q1"), py::kw_only(), py::arg("mode") = "all",
           py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
-          "Reference: every non-adjacent triangle pair through the same kernels, O(n^2), no certificates.");
+          "Reference: every non-adjacent triangle pair through the same kernels, O(n^2), no certificates.")
+      .def("__repr__", [](const SelfCcd& detector) {
+        return "<sscc.SelfCcd over " + std::to_string(detector.bvh().model().mesh().triangle_count()) +
+               " triangles, " + (detector.certificates() ? "with" : "without") + " certificates>";
+      });
 }
 
 }  // namespace sscc::python

@@ -16,7 +16,7 @@ static_assert(offsetof(InterObjectFeature, second) == offsetof(InterObjectFeatur
               "a feature's objects and indices are viewed as one row");
 
 /// None (the identity), a 4x4 homogeneous matrix, or a pair (R, t).
-RigidFrame frame_from(py::handle object, const std::string& name) {
+RigidFrame frame_from(py::object object, const std::string& name) {
   RigidFrame frame;
   if (object.is_none()) return frame;
   if ((py::isinstance<py::tuple>(object) || py::isinstance<py::list>(object)) && py::len(object) == 2) {
@@ -45,7 +45,7 @@ RigidFrame frame_from(py::handle object, const std::string& name) {
 
 /// Per-object items of a sequence that must have one per object (None: None for each).
 /// Owned references: iterating an array makes each row anew.
-std::vector<py::object> per_object(py::handle sequence, const char* name, std::size_t objects) {
+std::vector<py::object> per_object(py::object sequence, const char* name, std::size_t objects) {
   if (sequence.is_none()) return std::vector<py::object>(objects, py::none());
   std::vector<py::object> items;
   for (py::handle item : py::iter(sequence)) items.push_back(py::reinterpret_borrow<py::object>(item));
@@ -156,9 +156,11 @@ void bind_scene(py::module_& m) {
           "Adds an instance of a detector (kept alive as long as the scene) and returns its index. "
           "self_collision / inter_object switch its tests off.")
       .def_property_readonly("object_count", &Scene::object_count, "Number of objects.")
+      .def("__repr__",
+           [](const Scene& scene) { return "<sscc.Scene of " + std::to_string(scene.object_count()) + " objects>"; })
       .def(
           "step",
-          [](const Scene& scene, py::handle q0, py::handle q1, py::handle frames0, py::handle frames1,
+          [](const Scene& scene, py::object q0, py::object q1, py::object frames0, py::object frames1,
              const std::string& mode, bool use_certificates, double toi_tolerance, double minimum_separation) {
             const auto objects = static_cast<std::size_t>(scene.object_count());
             const auto start = per_object(q0, "q0", objects);

@@ -40,54 +40,7 @@ except ImportError:
     _sys.path.append(_build_info.NUMPY_SITE)
     import numpy as _numpy
 
-from ._sscc import (
-    DEFAULT_TOI_TOLERANCE,
-    EDGE_EDGE,
-    VERTEX_FACE,
-    Certificates,
-    Features,
-    Scene,
-    SceneObjectResult,
-    SceneReport,
-    SelfCcd,
-    SelfCcdReport,
-    SubspaceBvh,
-    SubspaceModel,
-    TriangleMesh,
-    edge_edge_ccd,
-    edge_edge_ccd_many,
-    modal_basis,
-    polynomial_basis,
-    read_basis,
-    read_mesh,
-    triangles_intersect,
-    vertex_face_ccd,
-    vertex_face_ccd_many,
-    write_basis,
-)
+from . import _sscc
+from ._sscc import *  # noqa: F401,F403 (the public API is the compiled module's)
 
-__all__ = [
-    "DEFAULT_TOI_TOLERANCE",
-    "EDGE_EDGE",
-    "VERTEX_FACE",
-    "Certificates",
-    "Features",
-    "Scene",
-    "SceneObjectResult",
-    "SceneReport",
-    "SelfCcd",
-    "SelfCcdReport",
-    "SubspaceBvh",
-    "SubspaceModel",
-    "TriangleMesh",
-    "edge_edge_ccd",
-    "edge_edge_ccd_many",
-    "modal_basis",
-    "polynomial_basis",
-    "read_basis",
-    "read_mesh",
-    "triangles_intersect",
-    "vertex_face_ccd",
-    "vertex_face_ccd_many",
-    "write_basis",
-]
+__all__ = [name for name in dir(_sscc) if not name.startswith("_")]
