@@ -124,3 +124,15 @@ def test_minimum_separation_needs_the_traditional_query(sphere_bvh, sphere_certi
         detector.query(np.zeros(MODES), np.zeros(MODES), minimum_separation=0.01)
     thick = detector.query(np.zeros(MODES), np.zeros(MODES), use_certificates=False, minimum_separation=0.3)
     assert thick.collided  # the sphere's non-adjacent triangles lie closer than 0.3
+
+
+def test_results_are_handed_over_without_copies(sphere, sphere_model):
+    """Arrays the library made for the caller are adopted by NumPy (their base is the capsule
+    that frees the C++ storage), and arrays the library keeps are views of their owner."""
+    U = sscc.polynomial_basis(sphere, MODES)
+    positions = sphere_model.deformed_positions(np.zeros(MODES))
+    for adopted in (U, positions):
+        assert not adopted.flags.owndata and type(adopted.base).__name__ == "PyCapsule"
+    assert sphere.vertices.base is sphere and sphere.triangles.base is sphere
+    assert sphere_model.scaled_basis.base is sphere_model and sphere_model.weights.base is sphere_model
+    np.testing.assert_array_equal(positions, sphere.vertices)
