@@ -2,7 +2,6 @@
 arrays without copies, and the cost of the language boundary."""
 
 import statistics
-import threading
 import time
 import tracemalloc
 
@@ -113,29 +112,6 @@ def test_vectorised_call_copies_nothing_it_does_not_need():
     finally:
         tracemalloc.stop()
     assert peak < start.nbytes / 4, f"peak {peak} bytes for {start.nbytes}-byte inputs"
-
-
-def test_long_calls_release_the_gil():
-    start, end = random_queries(np.random.default_rng(5), 1_000_000)
-    entered = threading.Event()
-    seconds = []
-
-    def worker():
-        entered.set()
-        begin = time.perf_counter()
-        sscc.vertex_face_ccd_many(start, end)
-        seconds.append(time.perf_counter() - begin)
-
-    thread = threading.Thread(target=worker)
-    thread.start()
-    entered.wait()
-    # Python code runs here while the worker is in C++ only if the call released the GIL.
-    iterations = 0
-    while thread.is_alive():
-        iterations += 1
-    thread.join()
-    assert seconds[0] > 0.02
-    assert iterations > 1000, f"{iterations} iterations during a {seconds[0]:.3f} s call"
 
 
 def test_boundary_cost_of_a_million_queries(record_property):
