@@ -28,7 +28,7 @@ if _sys.version_info[:2] != _build_info.BUILD_PYTHON_VERSION:
         % (*_build_info.BUILD_PYTHON_VERSION, _build_info.BUILD_PYTHON, *_sys.version_info[:2]))
 
 try:
-    import numpy as _numpy
+    import numpy as _numpy  # noqa: F401 (the compiled module needs it)
 except ImportError:
     # The compiled module loads in any interpreter of the version it was built for, but
     # needs NumPy. Another interpreter than the build one (a pyenv or virtual-environment
@@ -38,7 +38,7 @@ except ImportError:
     if not _build_info.NUMPY_SITE or _build_info.NUMPY_SITE in _sys.path:
         raise
     _sys.path.append(_build_info.NUMPY_SITE)
-    import numpy as _numpy
+    import numpy as _numpy  # noqa: F401
 
 from . import _sscc
 from ._sscc import *  # noqa: F401,F403 (the public API is the compiled module's)

@@ -1,7 +1,6 @@
 """Scenes from Python: frames as 4x4 matrices or (R, t) pairs, and contacts between
 objects against a brute force over every triangle pair through the vectorised kernels."""
 
-import itertools
 
 import numpy as np
 import pytest
