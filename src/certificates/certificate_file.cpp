@@ -131,6 +131,7 @@ Certificates Certificates::read(const std::string& path, const SubspaceBvh& bvh)
   parameters.global_radius_scale = r.get<double>("parameters");
   parameters.max_subdivision_depth = r.get<std::int32_t>("parameters");
   parameters.max_evaluations_per_pair = r.get<std::int32_t>("parameters");
+  if (const std::string problem = problem_with(parameters); !problem.empty()) r.fail("invalid parameters: " + problem);
   const auto node_count = r.get<std::int64_t>("node count");
   if (node_count != static_cast<std::int64_t>(bvh.nodes().size())) {
     r.fail("holds " + std::to_string(node_count) + " nodes, the hierarchy has " + std::to_string(bvh.nodes().size()) +

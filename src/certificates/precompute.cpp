@@ -194,17 +194,24 @@ Certificates::Certificates(const SubspaceBvh& bvh, const CertificateParameters& 
   for (auto& radii : sibling_radius_) radii.fill(0.0);
 }
 
-Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters,
-                                      const PrecomputeProgress& progress) {
+std::string problem_with(const CertificateParameters& parameters) {
   if (!std::isfinite(parameters.epsilon) || parameters.epsilon <= 0.0 || parameters.epsilon >= 1.0) {
-    throw std::invalid_argument("certificates: epsilon must lie in (0, 1), got " + std::to_string(parameters.epsilon));
+    return "epsilon must lie in (0, 1), got " + std::to_string(parameters.epsilon);
   }
   if (!std::isfinite(parameters.global_radius_scale) || parameters.global_radius_scale <= 0.0) {
-    throw std::invalid_argument("certificates: the global radius scale must be positive and finite");
+    return "the global radius scale must be positive and finite, got " + std::to_string(parameters.global_radius_scale);
   }
   if (parameters.max_subdivision_depth < 0 || parameters.max_evaluations_per_pair < 1) {
-    throw std::invalid_argument("certificates: subdivision limits must be non-negative");
+    return "subdivision limits must be non-negative (depth " + std::to_string(parameters.max_subdivision_depth) +
+           ") and allow an evaluation (evaluations " + std::to_string(parameters.max_evaluations_per_pair) + ")";
   }
+  return "";
+}
+
+Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters,
+                                      const PrecomputeProgress& progress) {
+  const std::string problem = problem_with(parameters);
+  if (!problem.empty()) throw std::invalid_argument("certificates: " + problem);
   const auto start = std::chrono::steady_clock::now();
   Certificates certificates(bvh, parameters);
   certificates.global_radius_ = global_radius_of(bvh.model(), parameters.global_radius_scale);

@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <fstream>
 #include <iterator>
 
@@ -85,4 +87,54 @@ TEST_CASE("certificate file: round trip, and every damaged or stale file refused
     REQUIRE_THAT(error_of(path, moved_bvh), Catch::Contains("stale"));
   }
   std::remove(path.c_str());
+}
+
+namespace {
+
+/// 64-bit FNV-1a, written here independently of the library's: the checksum a forger would
+/// recompute.
+std::uint64_t fnv1a(const char* data, std::size_t size) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < size; ++i) hash = (hash ^ static_cast<unsigned char>(data[i])) * 0x100000001b3ULL;
+  return hash;
+}
+
+/// The file's bytes with `parameters` written in and key and checksum recomputed to match.
+std::string with_parameters(std::string bytes, const sscc::SubspaceBvh& bvh, const sscc::CertificateParameters& p) {
+  constexpr std::size_t kKeyOffset = 16;  // after the magic, version and byte-order mark
+  const std::uint64_t key = sscc::Certificates::key_of(bvh, p);
+  const std::int32_t depth = p.max_subdivision_depth, evaluations = p.max_evaluations_per_pair;
+  std::memcpy(&bytes[kKeyOffset], &key, 8);
+  std::memcpy(&bytes[kKeyOffset + 8], &p.epsilon, 8);
+  std::memcpy(&bytes[kKeyOffset + 16], &p.global_radius_scale, 8);
+  std::memcpy(&bytes[kKeyOffset + 24], &depth, 4);
+  std::memcpy(&bytes[kKeyOffset + 28], &evaluations, 4);
+  const std::uint64_t checksum = fnv1a(bytes.data(), bytes.size() - 8);
+  std::memcpy(&bytes[bytes.size() - 8], &checksum, 8);
+  return bytes;
+}
+
+}  // namespace
+
+TEST_CASE("certificate file: parameters that precompute() refuses are refused on read", "[certificates]") {
+  const auto m = sscc::test::certified_sheets(Eigen::Vector3d(1, 1, 1));
+  const std::string path = temporary_path("sheets_parameters.sscc");
+  m->certificates.write(path);
+  const std::string bytes = read_bytes(path);
+
+  // The forgery itself is faithful: the file's own parameters rewritten read back fine.
+  write_bytes(path, with_parameters(bytes, m->bvh, m->certificates.parameters()));
+  CHECK(error_of(path, m->bvh).empty());
+
+  std::vector<sscc::CertificateParameters> invalid(4, m->certificates.parameters());
+  invalid[0].epsilon = std::numeric_limits<double>::quiet_NaN();
+  invalid[1].global_radius_scale = -1.0;
+  invalid[2].max_subdivision_depth = -7;
+  invalid[3].max_evaluations_per_pair = 0;
+  for (const sscc::CertificateParameters& p : invalid) {
+    REQUIRE_FALSE(sscc::problem_with(p).empty());
+    CHECK_THROWS_AS(sscc::Certificates::precompute(m->bvh, p), std::invalid_argument);
+    write_bytes(path, with_parameters(bytes, m->bvh, p));
+    CHECK_THAT(error_of(path, m->bvh), Catch::Contains("invalid parameters"));
+  }
 }

@@ -1,9 +1,11 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "sscc/mesh/mesh_io.hpp"
@@ -204,4 +206,24 @@ TEST_CASE("the real meshes beside the repository load", "[mesh]") {
   CHECK(lion.vertex_count() == 7529);
   CHECK(lion.triangle_count() == 14859);
   CHECK(report.polygons_triangulated == 0);
+}
+
+TEST_CASE("one polygon of 100k vertices reads (and a repeat in it is found) in n log n", "[mesh]") {
+  // A pairwise repeat check takes seconds here (4.9 MB, one face); sorting takes milliseconds.
+  constexpr int kCorners = 100000;
+  std::ostringstream obj;
+  for (int i = 0; i < kCorners; ++i) {
+    const double angle = 2.0 * M_PI * i / kCorners;
+    obj << "v " << std::cos(angle) << ' ' << std::sin(angle) << " 0\n";
+  }
+  std::ostringstream face;
+  face << "f";
+  for (int i = 1; i <= kCorners; ++i) face << ' ' << i;
+  sscc::MeshReadReport report;
+  const sscc::TriangleMesh mesh = sscc::read_mesh(scratch_file("disc.obj", obj.str() + face.str() + "\n"), &report);
+  CHECK(mesh.triangle_count() == kCorners - 2);
+  CHECK(report.polygons_triangulated == 1);
+  CHECK_THAT(error_of("disc_repeat.obj", obj.str() + face.str() + " 1\n"),
+             Catch::Contains("disc_repeat.obj:" + std::to_string(kCorners + 1)) &&
+                 Catch::Contains("repeats a vertex"));
 }

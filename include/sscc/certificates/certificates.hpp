@@ -43,6 +43,11 @@ struct CertificateParameters {
   int max_evaluations_per_pair = 2048;
 };
 
+/// What is wrong with `parameters` ("" when they are valid): epsilon in (0, 1), a positive
+/// finite global radius scale, a non-negative depth and at least one evaluation per pair.
+/// precompute() refuses invalid parameters, read() refuses files that hold them.
+std::string problem_with(const CertificateParameters& parameters);
+
 struct PrecomputeStats {
   long node_pairs_visited = 0;
   long node_pairs_culled = 0;       ///< by the box-box bound
