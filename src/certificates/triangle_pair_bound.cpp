@@ -16,14 +16,13 @@ namespace {
 using ModeBlock = Eigen::Matrix<double, 3, Eigen::Dynamic>;
 using Weights6 = Eigen::Matrix<double, 6, 1>;
 
-// Added, times the trace, to the Gram matrices of mode combinations, with kGramRounding:
+// Added, times the trace, to the Gram matrices of mode combinations, with the Gram pad:
 // errs the dual bound's denominator upwards (so the bound downwards) by more than the
 // rounding of v^T G v. Larger values only weaken the bounds.
 constexpr double kEigenvaluePad = 1e-12;
 // Gram matrices of combinations of the six vertex blocks are formed from their pairwise
 // products; the absolute rounding of a combination with coefficients c is below
-// kGramRounding * (sum |c_i|)^2 * (largest block Gram trace), added as a further pad.
-constexpr double kGramRounding = 256.0 * std::numeric_limits<double>::epsilon();
+// gram_rounding_pad(r) * (sum |c_i|)^2 * (largest block Gram trace), added as a further pad.
 // Smallest eigenvalue of the constant-mode Gram matrix used in its map, relative to the
 // largest. Only conditions the choice of multiplier: not a soundness matter.
 constexpr double kMapConditioning = 1e-12;
@@ -61,7 +60,7 @@ class PairFrame {
     gram_.noalias() = stacked.lazyProduct(stacked.transpose());
     double largest = 0.0;
     for (int i = 0; i < 6; ++i) largest = std::max(largest, gram_.block<3, 3>(3 * i, 3 * i).trace());
-    rounding_ = kGramRounding * largest;
+    rounding_ = gram_rounding_pad(r) * largest;
     for (const Eigen::Vector3d& p : rest_) extent_ = std::max(extent_, p.cwiseAbs().maxCoeff());
     for (int i = 0; i < 6; ++i) {
       for (int j = 0; j < 6; ++j) traces_(i, j) = gram_.block<3, 3>(3 * i, 3 * j).trace();

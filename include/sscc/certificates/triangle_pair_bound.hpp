@@ -22,9 +22,22 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 
 namespace sscc {
+
+/// The relative rounding pad of the pair bound's Gram matrices for r modes: each entry is a
+/// dot product of two r-vectors of centred mode entries, whose rounding is below
+/// gamma_{r+2} (the dot product's accumulation and the centring) times the product of the
+/// vectors' norms, and combining the entries with six coefficients adds a few units of
+/// roundoff more; the pad is twice r plus a constant margin, never below the 256 units used
+/// for r <= 64. Smaller could let a radius round above the true one for large r; larger only
+/// weakens the bounds.
+constexpr double gram_rounding_pad(int modes) {
+  return std::max(256.0, 2.0 * (modes + 64.0)) * std::numeric_limits<double>::epsilon();
+}
 
 /// A triangle with its rest vertices and the 3 x r scaled mode block of each vertex.
 struct ModalTriangle {
