@@ -37,6 +37,32 @@ constexpr double kDistanceAllowance = 1e-12;
 // they arise). Covers r up to about 10^6 modes.
 constexpr double kOneDimensionalShrink = 1.0 - 1e-9;
 
+/// How far the positions a query computes, p + U_hat q_hat in floating point, can lie from
+/// the exact ones at a vertex of the pair (2-norm): absolute + per_norm ||q_hat||. Each
+/// coordinate is an (r + 1)-term sum, rounded by at most gamma_{r+1} times the sum of its
+/// terms' magnitudes, itself at most |p_k| + ||U_hat_k||_2 ||q_hat|| (Cauchy-Schwarz); three
+/// coordinates add sqrt(3), and (r + 2) epsilon covers sqrt(3) gamma_{r+1}. A contact of the
+/// computed positions needs the exact ones within twice this of each other, so the bounds
+/// subtract 2 absolute from every gap and add 2 per_norm to every rate: contacts that exist
+/// only through rounding (far from the origin, where a unit of roundoff is large) stay
+/// outside the certificates.
+struct PositionRounding {
+  double absolute = 0.0;
+  double per_norm = 0.0;
+};
+
+PositionRounding rounding_of_positions(const ModalTriangle& a, const ModalTriangle& b) {
+  const double c = (static_cast<double>(a.modes[0].cols()) + 2.0) * std::numeric_limits<double>::epsilon();
+  double coordinate = 0.0, row = 0.0;
+  for (const ModalTriangle* t : {&a, &b}) {
+    for (int i = 0; i < 3; ++i) {
+      coordinate = std::max(coordinate, t->rest[i].cwiseAbs().maxCoeff());
+      row = std::max(row, t->modes[i].rowwise().norm().maxCoeff());
+    }
+  }
+  return {c * coordinate, c * row};
+}
+
 /// The two triangles of a pair, reduced to what the bounds need: the six rest vertices and
 /// the Gram matrix of the six 3 x r vertex mode blocks (centred on their mean, which every
 /// combination used here cancels: their coefficients sum to zero). Every mode block of a
@@ -44,7 +70,7 @@ constexpr double kOneDimensionalShrink = 1.0 - 1e-9;
 /// touches r-dimensional data.
 class PairFrame {
  public:
-  PairFrame(const ModalTriangle& a, const ModalTriangle& b) {
+  PairFrame(const ModalTriangle& a, const ModalTriangle& b) : position_rounding_(rounding_of_positions(a, b)) {
     const int r = static_cast<int>(a.modes[0].cols());
     ModeBlock mean = ModeBlock::Zero(3, r);
     for (int i = 0; i < 3; ++i) mean += (a.modes[i] + b.modes[i]) / 6.0;
@@ -100,6 +126,7 @@ class PairFrame {
 
   /// Largest rest coordinate, relative to the first vertex of the first triangle.
   double extent() const { return extent_; }
+  const PositionRounding& position_rounding() const { return position_rounding_; }
 
   Eigen::Vector3d point(const Weights6& w) const {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
@@ -113,6 +140,7 @@ class PairFrame {
   std::array<Eigen::Vector3d, 6> rest_;
   double rounding_ = 0.0;
   double extent_ = 0.0;
+  PositionRounding position_rounding_;
 };
 
 /// A piece of one triangle: row k holds the barycentric weights of the piece's vertex k.
@@ -153,9 +181,11 @@ double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, cons
     for (int k = 0; k < 3; ++k) {
       const Weights6 xb = on_second(pb.row(k).transpose());
       const Eigen::Vector3d& b_point = corners_b[k];
-      const double numerator = unit.dot(a_point - b_point) - kDistanceAllowance * frame.extent();
+      const double numerator = unit.dot(a_point - b_point) - kDistanceAllowance * frame.extent() -
+                               2.0 * frame.position_rounding().absolute;
       if (!(numerator > 0.0)) return 0.0;
-      bound = std::min(bound, numerator / std::sqrt(frame.projected_norm_squared_upper(forms, xb - xa)));
+      bound = std::min(bound, numerator / (std::sqrt(frame.projected_norm_squared_upper(forms, xb - xa)) +
+                                           2.0 * frame.position_rounding().per_norm));
     }
   }
   return bound;
@@ -300,13 +330,14 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
   if (!(length > 0.0)) return 0.0;
   const Eigen::Vector3d n = axis / length;
   constexpr double u = std::numeric_limits<double>::epsilon();
+  const PositionRounding rounding = rounding_of_positions(a, b);
   // Per vertex pair (j, k): a lower bound of the gap n^T (X_b,k - X_a,j), the computed dot
   // product less its absolute rounding (the difference and the three products).
   std::array<double, 9> gap, squared{};
   for (int j = 0; j < 3; ++j) {
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d d = b.rest[k] - a.rest[j];
-      gap[3 * j + k] = n.dot(d) - 8.0 * u * n.cwiseAbs().dot(d.cwiseAbs());
+      gap[3 * j + k] = n.dot(d) - 8.0 * u * n.cwiseAbs().dot(d.cwiseAbs()) - 2.0 * rounding.absolute;
       if (!(gap[3 * j + k] > 0.0)) return 0.0;
     }
   }
@@ -333,7 +364,8 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
   // sums, the square root and the division.
   double radius = INFINITY;
   for (int i = 0; i < 9; ++i) {
-    if (squared[i] > 0.0) radius = std::min(radius, gap[i] / std::sqrt(squared[i]));
+    const double rate = std::sqrt(squared[i]) + 2.0 * rounding.per_norm;
+    if (rate > 0.0) radius = std::min(radius, gap[i] / rate);
   }
   return kOneDimensionalShrink * radius;
 }

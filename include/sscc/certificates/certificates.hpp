@@ -10,9 +10,10 @@
 // p + U q): built from the conservative triangle-pair bounds of triangle_pair_bound.hpp, the
 // box-box and 1D bounds in Cauchy-Schwarz form, and clamps that only lower values (the
 // global radius R_global, and a computation stopped early keeps the minimum it was handed).
-// The query compares these radii with norms computed in floating point and then tests
-// positions computed in floating point: a contact that exists only through the rounding of
-// those positions (a few units of roundoff of the coordinates) is outside the guarantee.
+// The pair bounds also pad the rounding of the positions a query computes in floating point
+// (triangle_pair_bound.cpp: (r + 2) units of roundoff of each coordinate's magnitude and of
+// ||U_hat_v|| ||q_hat||), so a contact that exists only through that rounding, as far from
+// the origin, is never certified away: reports with and without certificates agree.
 // Radii are not tight: a pair's radius is resolved to within the relative accuracy epsilon
 // where it matters, and every radius is capped at R_global.
 //
