@@ -18,7 +18,10 @@
 // pairs of objects: conservative node bounds, exact kernels on the positions as computed).
 //
 // Skipping what a step does not need: an object that did not move (q0 == q1 and equal
-// frames) costs nothing; an object certified for the step costs O(r); a pair of objects
+// frames) costs nothing: nothing can come into contact during the step, and, as in every
+// continuous query, a contact that already exists at t = 0 (an object resting in contact
+// with itself, or two static objects touching) is not reported; SelfCcd::query_discrete
+// finds such contacts; an object certified for the step costs O(r); a pair of objects
 // whose swept bounds (the root's O(r) subspace bound, in world space) do not meet costs one
 // box test; the vertices of an object are computed only where another object's bounds
 // reach them; self and inter-object tests can be switched off per object.
@@ -67,7 +70,7 @@ struct SceneOptions : SelfCcdOptions {};
 enum class SelfTestOutcome : std::uint8_t {
   kTraversed,  ///< the self query ran (partly culled by certificates, or not at all)
   kCertified,  ///< the root certificate decided the step in O(r)
-  kStatic,     ///< the object did not move: nothing to test
+  kStatic,     ///< the object did not move: nothing to test (contacts at t = 0 not reported)
   kSwitchedOff,
   kNotReached,  ///< any-hit mode stopped the step before this object
 };
