@@ -3,7 +3,8 @@
 set -euo pipefail
 
 packages=(build-essential cmake libeigen3-dev libgmp-dev catch2 libfcl-dev libccd-dev gnuplot-nox libspectra-dev libtet1.5-dev libopenmesh-dev
-          python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib)
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
+          clang libclang-rt-14-dev libomp-dev clang-format)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
