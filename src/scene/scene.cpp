@@ -131,6 +131,7 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
   SelfCcdOptions self_options;
   self_options.mode = options.mode;
   self_options.use_certificates = options.use_certificates;
+  self_options.use_normal_cones = options.use_normal_cones;
   self_options.kernel = options.kernel;
   bool stop = false;
   const auto self_start = std::chrono::steady_clock::now();

@@ -140,6 +140,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
 
   SceneOptions with, without;
   without.use_certificates = false;
+  without.use_normal_cones = false;  // traditional: the plain swept-box query
   SelfCcdOptions discrete_with, discrete_without;
   discrete_without.use_certificates = false;
   std::vector<std::vector<ObjectStep>> sampled;  // the steps FCL sees

@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 #include "sscc/bvh/subspace_bvh.hpp"
@@ -30,6 +31,10 @@
 #include "sscc/certificates/certificates.hpp"
 
 namespace sscc {
+
+namespace detail {
+class NodeBoundaries;
+}
 
 enum class FeatureKind : std::uint8_t { kVertexFace, kEdgeEdge };
 
@@ -83,8 +88,14 @@ enum class NodeBounds : std::uint8_t {
 struct SelfCcdOptions {
   SelfCcdMode mode = SelfCcdMode::kAllContacts;
   NodeBounds bounds = NodeBounds::kHybrid;
-  /// Cull by the certificates when the detector has them; false gives the traditional query.
+  /// Cull by the certificates when the detector has them; false (with use_normal_cones false)
+  /// gives the traditional query.
   bool use_certificates = true;
+  /// Skip nodes, and pairs of neighbouring nodes, that form a patch whose normals stay in a
+  /// cone and whose contour stays star-shaped over the step: proven free of self-contact
+  /// (src/query/patch_cull.hpp states the theorem). Exact, like every cull here. Not applied
+  /// with a minimum separation (it proves no contact, not a distance) nor to query_discrete.
+  bool use_normal_cones = true;
   /// The kernels' options. A minimum separation (kernel.minimum_separation > 0) cannot be
   /// combined with certificates, which bound contact, not proximity: such queries throw.
   ccd::CcdOptions kernel;
@@ -97,6 +108,7 @@ struct SelfCcdStats {
   long kernel_calls = 0;
   long vertices_computed = 0;
   long certified = 0;          ///< nodes and sibling pairs culled by a certificate
+  long cone_culled = 0;        ///< nodes and node pairs culled by the normal-cone test
   bool root_certified = false;  ///< the whole step decided by the root's certificate
   double seconds = 0.0;
 };
@@ -111,7 +123,7 @@ struct SelfCcdReport {
 
 class SelfCcd {
  public:
-  explicit SelfCcd(const SubspaceBvh& bvh) : bvh_(bvh) {}
+  explicit SelfCcd(const SubspaceBvh& bvh);
   /// With certificates; throws std::invalid_argument when they were computed for another
   /// model or hierarchy.
   SelfCcd(const SubspaceBvh& bvh, const Certificates& certificates);
@@ -144,6 +156,7 @@ class SelfCcd {
  private:
   const SubspaceBvh& bvh_;
   const Certificates* certificates_ = nullptr;
+  std::shared_ptr<const detail::NodeBoundaries> boundaries_;  // the normal-cone cull's static data
 };
 
 }  // namespace sscc

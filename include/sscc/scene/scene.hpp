@@ -61,7 +61,8 @@ struct ObjectStep {
 
 struct SceneOptions {
   SelfCcdMode mode = SelfCcdMode::kAllContacts;  ///< for the whole step
-  bool use_certificates = true;  ///< false: every self test is the traditional query
+  bool use_certificates = true;  ///< false (with use_normal_cones false): the traditional query
+  bool use_normal_cones = true;  ///< SelfCcdOptions::use_normal_cones for every self test
   ccd::CcdOptions kernel;
 };
 

@@ -1,0 +1,119 @@
+// Normal-cone culling for continuous self-collision: a proof, per node (or pair of nodes) of
+// the hierarchy, that no two non-adjacent triangles under it touch at any t of the step.
+// Private to the library; SelfCcd's traversal calls it when SelfCcdOptions::use_normal_cones.
+//
+// THEOREM. Let S be a set of oriented triangles of the mesh (a 2-chain), d a fixed unit
+// vector and c(t) a point moving linearly, t in [0, 1]. Suppose, for every t in [0, 1]:
+//  (i)  every triangle T of S has d . n_T(t) > 0 (n_T = (x1 - x0) x (x2 - x0)): its
+//       projection on the plane orthogonal to d is a non-degenerate, positively oriented
+//       triangle;
+//  (ii) the boundary chain dS (each edge with its net coefficient: (a, b) and (b, a) cancel;
+//       an edge in two triangles of one orientation counts twice) is one closed walk through
+//       distinct vertices (static: contour.hpp, is_simple_cycle) every edge (a, b) of which
+//       has d . ((a - c) x (b - c))(t) > 0, and which winds exactly once about c(0).
+// Then no two triangles of S that share no vertex touch at any t in [0, 1].
+//
+// PROOF. Fix t; project along d (pi). (ii) makes every boundary edge turn counter-clockwise
+// about pi(c) by an angle in (0, pi), so the angle swept along the walk increases strictly;
+// the walk is closed, so the total is 2 pi k, k >= 1, and k is continuous in t (no edge angle
+// reaches 0 or pi), hence equal to its value at t = 0, which is 1. A closed walk sweeping a
+// total of exactly 2 pi strictly monotonically meets every direction from pi(c) once: the
+// projected boundary is a simple closed polygon and no two distinct boundary vertices or
+// edges share a projected point except consecutive edges at their common vertex. By (i) each
+// projected triangle covers its interior once, positively; for a point p not on a projected
+// edge, the number of triangles whose projection contains p is the sum of their boundaries'
+// winding numbers about p, which is the winding number of pi(dS) about p (winding numbers are
+// additive over chains and twins cancel), so it is 0 or 1: projected interiors are disjoint,
+// and no open set is covered twice. Now let T1, T2 in S share no vertex and touch at x;
+// p = pi(x). (a) If p is interior to pi(T1) (or pi(T2)), pi(T2) (a non-degenerate triangle
+// containing p) overlaps it in an open set: covered twice. (b) Otherwise x lies on an edge or
+// vertex of both. Let f1 be the smallest feature of T1 containing x. If f1 is an edge not in
+// dS, its twin T1' (of opposite orientation; T1' != T2 since it shares f1's vertices with T1)
+// projects on the other side of pi(f1), so T1 and T1' cover a disc about p and T2's wedge at p
+// is covered twice. If f1 is a vertex v with no edge of dS at it, the triangles around v have
+// a link (their edges opposite v) that is a cycle (the edges at v cancel), every link edge
+// turns counter-clockwise about p (each such triangle is positive), so the fan covers a
+// punctured disc about p at least once and T2 (which does not contain v) covers part of it a
+// second time. The same holds for f2. What remains is f1 and f2 both on dS (an edge of dS, or
+// a vertex on one): two distinct, non-consecutive parts of the simple boundary polygon (they
+// share no vertex) meeting at p, which (ii) excludes. So no such x exists.
+//
+// What the hypotheses cover: degenerate or zero-area triangles fail (i) (a strict
+// inequality); duplicated vertices (two indices, one position) are distinct vertices, covered
+// by (b); a T-junction leaves both sides' edges in dS running opposite ways along one segment,
+// which (ii) rejects; non-manifold edges (three or more triangles) leave net coefficients that
+// either fail the simple-walk test or double-cover a side of the edge, excluded by the winding
+// argument; inconsistently oriented neighbours both project positively only if they overlap,
+// and their shared edge does not cancel; a closed surface has an empty boundary (k = 0) and a
+// set with several components or holes several loops: never culled. Contact here is touching
+// (distance 0): queries with a minimum separation d > 0 do not use this cull.
+//
+// FLOATING POINT: (i) and (ii) are decided for the vertex positions exactly as the query
+// computes them, each quadratic through its three Bernstein coefficients with certified signs
+// (normal_cone.hpp); d and c are arbitrary doubles, so their rounding does not matter. The
+// winding number is counted exactly as the crossings of one ray, every vertex's side
+// certified (contour.hpp).
+//
+// LITERATURE. Volino and Magnenat-Thalmann (1994) introduced the test: normals in a cone of
+// half-angle below 90 degrees plus a projected contour that does not cross itself, for one
+// configuration. Provot (1997) used it hierarchically on cloth, bottom-up cones over zones.
+// Tang et al. (2009) made the cones continuous: a deforming triangle's normal is a quadratic
+// in t whose Bernstein coefficients bound it, as here, but kept no contour test (it is
+// approximate; the SSCC paper, section 7, says the same of the usual version). Wang et al.
+// (2018) made the contour test cheap and sound with unprojected normal cones: star-shapedness
+// of the contour, decided by point-plane classifications of the contour's edges against a
+// point, in linear time. We follow that choice of a star-shaped contour, but continuously in
+// t (each edge's orientation about a linearly moving centre is a quadratic with Bernstein
+// coefficients, the same predicate as a triangle's normal), with the winding number checked
+// (a star-shaped walk could wind twice), the boundary chain from static connectivity, and
+// every sign certified in floating point. Schvartzman et al. (2009) bound normals of reduced
+// deformations in O(r) per node; we compute them from the vertex positions the query already
+// forms.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <vector>
+
+#include "query/contour.hpp"
+#include "query/normal_cone.hpp"
+#include "query/sweep.hpp"
+
+namespace sscc::detail {
+
+/// The cull for one query. Positions x0, x1 belong to the caller, who computes a triangle's
+/// vertices when asked through `ensure_triangle` (the triangle's position in the hierarchy's
+/// order); nothing here outlives the query.
+class PatchCull {
+ public:
+  using EnsureTriangle = std::function<void(int)>;
+  PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
+            const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle);
+
+  /// Whether node n's triangles provably never touch one another during the step.
+  bool cannot_self_touch(int n);
+  /// Whether the union of the disjoint nodes a and b provably has no touching pair (tried only
+  /// when each passes the cone test on its own, the union being then likely to).
+  bool cannot_touch(int a, int b);
+
+ private:
+  const BernsteinNormals& normals(int i);
+  /// The sum over n's triangles of their normals at both ends (area-weighted): the cone axis.
+  const Eigen::Vector3d& axis(int n);
+  /// Whether every triangle of n has d . n_T(t) > 0 over the step.
+  bool cone_holds(const Eigen::Vector3d& d, int n);
+  /// Whether n's triangles pass the cone test about n's own axis (cached).
+  bool own_cone_holds(int n);
+
+  const SubspaceBvh& bvh_;
+  const NodeBoundaries& boundaries_;
+  const std::vector<Eigen::Vector3d>& x0_;
+  const std::vector<Eigen::Vector3d>& x1_;
+  EnsureTriangle ensure_triangle_;
+  LazyBoxes<BernsteinNormals> normals_;  // by position in the hierarchy's triangle order
+  LazyBoxes<Eigen::Vector3d> axes_;
+  std::vector<signed char> own_cone_;  // -1 unknown, 0 fails, 1 holds
+};
+
+}  // namespace sscc::detail
