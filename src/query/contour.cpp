@@ -60,8 +60,10 @@ bool is_simple_cycle(const std::vector<DirectedEdge>& chain) {
 }
 
 NodeBoundaries::NodeBoundaries(const SubspaceBvh& bvh)
-    : chains_(bvh.nodes().size()), simple_cycle_(bvh.nodes().size(), 0) {
+    : chains_(bvh.nodes().size()), across_(bvh.nodes().size()), simple_cycle_(bvh.nodes().size(), 0) {
   const TriangleMesh& mesh = bvh.model().mesh();
+  std::vector<int> position(mesh.triangle_count());
+  for (int i = 0; i < mesh.triangle_count(); ++i) position[bvh.triangle_order()[i]] = i;
   // Children follow their parent in the node array: fill from the back.
   for (int n = static_cast<int>(bvh.nodes().size()) - 1; n >= 0; --n) {
     const SubspaceBvh::Node& node = bvh.nodes()[n];
@@ -78,6 +80,18 @@ NodeBoundaries::NodeBoundaries(const SubspaceBvh& bvh)
     }
     chains_[n] = boundary_chain(std::move(edges));
     simple_cycle_[n] = is_simple_cycle(chains_[n]);
+    for (const DirectedEdge& e : chains_[n]) {
+      // The mesh's edge {a, b} is among the first vertex's triangles' edges.
+      int twin = kNoTwin;
+      for (const int* t = mesh.triangles_of_vertex_begin(e[0]); t != mesh.triangles_of_vertex_end(e[0]); ++t) {
+        const Triangle& tri = mesh.triangles()[*t];
+        const bool has_b = tri[0] == e[1] || tri[1] == e[1] || tri[2] == e[1];
+        const int here = position[*t];
+        if (!has_b || (here >= node.triangle_begin && here < node.triangle_end)) continue;
+        twin = twin == kNoTwin ? here : kSeveralTwins;
+      }
+      across_[n].push_back(twin);
+    }
   }
 }
 
@@ -96,6 +110,7 @@ Eigen::Vector3d across(const Eigen::Vector3d& d) {
 
 bool winds_once_star_shaped(const Eigen::Vector3d& d, const std::vector<DirectedEdge>& chain,
                             const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1) {
+  if (chain.empty()) return false;  // a closed surface: winds zero times
   Eigen::Vector3d c0 = Eigen::Vector3d::Zero();
   Eigen::Vector3d c1 = Eigen::Vector3d::Zero();
   for (const DirectedEdge& e : chain) {

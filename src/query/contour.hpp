@@ -29,18 +29,28 @@ bool is_simple_cycle(const std::vector<DirectedEdge>& chain);
 /// (fixed for the hierarchy; built once). Children's chains summed give the parent's.
 class NodeBoundaries {
  public:
+  /// across(n)[k] for chain(n)[k] = (a, b): the position in the hierarchy's triangle order of
+  /// the one other triangle on edge {a, b} (which holds (b, a) when consistently oriented);
+  /// kNoTwin on the mesh's boundary, kSeveralTwins on a non-manifold edge.
+  static constexpr int kNoTwin = -1;
+  static constexpr int kSeveralTwins = -2;
+
   explicit NodeBoundaries(const SubspaceBvh& bvh);
   const std::vector<DirectedEdge>& chain(int n) const { return chains_[n]; }
+  const std::vector<int>& across(int n) const { return across_[n]; }
   bool simple_cycle(int n) const { return simple_cycle_[n] != 0; }
 
  private:
   std::vector<std::vector<DirectedEdge>> chains_;
+  std::vector<std::vector<int>> across_;
   std::vector<char> simple_cycle_;
 };
 
-/// Whether the simple cycle `chain`, seen along d (unit length), stays strictly star-shaped
-/// and winds exactly once about the point c(t) moving linearly from the mean of its vertices
-/// at t = 0 to that at t = 1, for every t in [0, 1], for the positions exactly as given:
+/// Whether the boundary chain `chain` (a cycle: every vertex entered as often as left), seen
+/// along d (unit length), stays strictly star-shaped and winds exactly once about the point
+/// c(t) moving linearly from the mean of its vertices at t = 0 to that at t = 1, for every t
+/// in [0, 1], for the positions exactly as given (it is then one simple closed polygon in
+/// projection: query/patch_cull.hpp):
 /// every edge (a, b) has d . ((a - c) x (b - c))(t) > 0 (a quadratic, certified through its
 /// Bernstein coefficients, normal_cone.hpp), and the edges crossing one ray from c(0) number
 /// exactly one (each crossing is counter-clockwise, so that is the winding number; a vertex

@@ -1,5 +1,6 @@
 #include "query/normal_cone.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sscc::detail {
@@ -52,6 +53,57 @@ int certified_sign_of_triple(const Vector3d& d, const Vector3d& w, const Vector3
   if (certainly_positive(d, wv.value, error)) return 1;
   if (certainly_positive(-d, wv.value, error)) return -1;
   return 0;
+}
+
+}  // namespace sscc::detail
+
+namespace sscc::detail {
+
+namespace {
+
+bool normalised(const Eigen::Vector3d& v, Eigen::Vector3d& out) {
+  const double length = v.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) return false;
+  out = v / length;
+  return true;
+}
+
+}  // namespace
+
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+NormalCone cone_of(const Eigen::Vector3d& axis, const BernsteinNormals* begin, const BernsteinNormals* end) {
+  // For an exact N within |E| of the computed one, |d x N| <= |d x N_c| + |E| and
+  // d . N >= d . N_c - |E| (|d| = 1), so while the latter is positive the angle between d and
+  // N is at most atan2(|d x N_c| + |E|, d . N_c - |E|). The largest such angle is kept by its
+  // tangent (a monotone choice: a rounding slip picks an angle within an ulp of the largest).
+  NormalCone cone;
+  if (!normalised(axis, cone.axis)) return cone;
+  double widest_across = 0.0, widest_along = 1.0;
+  for (const BernsteinNormals* n = begin; n != end; ++n) {
+    for (int k = 0; k < 3; ++k) {
+      const double error = n->error[k].norm();
+      const double along = cone.axis.dot(n->value[k]) - error;
+      const double across = cone.axis.cross(n->value[k]).norm() + error;
+      if (!(along > 0.0)) return cone;  // NaN fails too
+      if (across * widest_along > widest_across * along) widest_across = across, widest_along = along;
+    }
+  }
+  cone.half_angle = std::atan2(widest_across, widest_along) + kAngleSlack;
+  return cone;
+}
+
+NormalCone merged_cone(const Eigen::Vector3d& axis, const NormalCone* begin, const NormalCone* end) {
+  NormalCone cone;
+  if (!normalised(axis, cone.axis)) return cone;
+  double widest = 0.0;
+  for (const NormalCone* part = begin; part != end; ++part) {
+    widest = std::max(widest, angle_between(cone.axis, part->axis) + part->half_angle + kAngleSlack);
+  }
+  cone.half_angle = widest;
+  return cone;
 }
 
 }  // namespace sscc::detail

@@ -34,6 +34,7 @@
 #include <Eigen/Geometry>  // cross products
 
 #include <array>
+#include <cmath>
 
 namespace sscc::detail {
 
@@ -76,5 +77,37 @@ inline bool certainly_positive(const Eigen::Vector3d& d, const BernsteinNormals&
 /// doubles p, c: +1 or -1 when certain, 0 when rounding could change it.
 int certified_sign_of_triple(const Eigen::Vector3d& d, const Eigen::Vector3d& w, const Eigen::Vector3d& p,
                              const Eigen::Vector3d& c);
+
+}  // namespace sscc::detail
+
+namespace sscc::detail {
+
+/// Slack added to every angle computed in floating point below (radians). Each computed angle
+/// is an atan2(y, x) whose arguments err by at most a few u times sqrt(x^2 + y^2) (cross
+/// products' norms, dot products and error bounds of vectors; normalisation), so it is within
+/// 1e-14 of the angle of the exact arguments (atan2 itself errs by an ulp). 1e-9 leaves five
+/// orders of magnitude; smaller than 1e-14 could certify a cone rounding made up, larger
+/// only gives up cones within 1e-9 of 90 degrees.
+inline constexpr double kAngleSlack = 1e-9;
+
+/// A cone of directions: every vector it holds makes an angle of at most half_angle with
+/// axis (a unit vector as computed; the bound is about that double vector).
+struct NormalCone {
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  double half_angle = 4.0;  ///< above pi: holds everything (an empty or unknown cone)
+  /// Whether every vector held has a strictly positive dot product with the axis.
+  bool within_half_space() const { return half_angle < 0.5 * M_PI - kAngleSlack; }
+};
+
+/// The angle between two vectors, from atan2 (accurate near 0 and pi, unlike acos).
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
+/// A cone about `axis` (normalised here) holding the exact coefficients N0, N1, N2 of every
+/// triangle in [begin, end); the whole space when one may point away from the axis.
+NormalCone cone_of(const Eigen::Vector3d& axis, const BernsteinNormals* begin, const BernsteinNormals* end);
+
+/// A cone about `axis` (normalised here) holding the cones given (each axis's angle to it plus
+/// its half-angle, with slack).
+NormalCone merged_cone(const Eigen::Vector3d& axis, const NormalCone* begin, const NormalCone* end);
 
 }  // namespace sscc::detail

@@ -7,18 +7,20 @@
 //  (i)  every triangle T of S has d . n_T(t) > 0 (n_T = (x1 - x0) x (x2 - x0)): its
 //       projection on the plane orthogonal to d is a non-degenerate, positively oriented
 //       triangle;
-//  (ii) the boundary chain dS (each edge with its net coefficient: (a, b) and (b, a) cancel;
-//       an edge in two triangles of one orientation counts twice) is one closed walk through
-//       distinct vertices (static: contour.hpp, is_simple_cycle) every edge (a, b) of which
-//       has d . ((a - c) x (b - c))(t) > 0, and which winds exactly once about c(0).
+//  (ii) every edge (a, b) of the boundary chain dS (each edge with its net coefficient: (a, b)
+//       and (b, a) cancel; an edge in two triangles of one orientation counts twice) has
+//       d . ((a - c) x (b - c))(t) > 0, and exactly one edge of dS crosses a fixed ray from
+//       c(0) in the plane orthogonal to d at t = 0.
 // Then no two triangles of S that share no vertex touch at any t in [0, 1].
 //
-// PROOF. Fix t; project along d (pi). (ii) makes every boundary edge turn counter-clockwise
-// about pi(c) by an angle in (0, pi), so the angle swept along the walk increases strictly;
-// the walk is closed, so the total is 2 pi k, k >= 1, and k is continuous in t (no edge angle
-// reaches 0 or pi), hence equal to its value at t = 0, which is 1. A closed walk sweeping a
-// total of exactly 2 pi strictly monotonically meets every direction from pi(c) once: the
-// projected boundary is a simple closed polygon and no two distinct boundary vertices or
+// PROOF. Fix t; project along d (pi). dS is a cycle (every vertex is entered as often as it
+// is left), so it splits into closed walks. By (ii) every boundary edge turns
+// counter-clockwise about pi(c) by an angle in (0, pi); a closed walk's angles sum to 2 pi w
+// with w >= 1, and each edge crosses the ray at most once, from its clockwise side, so at
+// t = 0 the crossings number the sum of the w's: one walk, winding once. The angles never
+// reach 0 or pi, so the total stays 2 pi for every t. A closed walk sweeping a total of exactly
+// 2 pi strictly monotonically meets every direction from pi(c) once: its vertices are distinct,
+// the projected boundary is a simple closed polygon, and no two distinct boundary vertices or
 // edges share a projected point except consecutive edges at their common vertex. By (i) each
 // projected triangle covers its interior once, positively; for a point p not on a projected
 // edge, the number of triangles whose projection contains p is the sum of their boundaries'
@@ -42,17 +44,19 @@
 // inequality); duplicated vertices (two indices, one position) are distinct vertices, covered
 // by (b); a T-junction leaves both sides' edges in dS running opposite ways along one segment,
 // which (ii) rejects; non-manifold edges (three or more triangles) leave net coefficients that
-// either fail the simple-walk test or double-cover a side of the edge, excluded by the winding
-// argument; inconsistently oriented neighbours both project positively only if they overlap,
-// and their shared edge does not cancel; a closed surface has an empty boundary (k = 0) and a
+// either make dS revisit a vertex or double-cover a side of the edge, both excluded above;
+// inconsistently oriented neighbours both project positively only if they overlap, and their
+// shared edge does not cancel; a closed surface has an empty boundary (k = 0) and a
 // set with several components or holes several loops: never culled. Contact here is touching
 // (distance 0): queries with a minimum separation d > 0 do not use this cull.
 //
 // FLOATING POINT: (i) and (ii) are decided for the vertex positions exactly as the query
 // computes them, each quadratic through its three Bernstein coefficients with certified signs
-// (normal_cone.hpp); d and c are arbitrary doubles, so their rounding does not matter. The
-// winding number is counted exactly as the crossings of one ray, every vertex's side
-// certified (contour.hpp).
+// (normal_cone.hpp), or for (i) through a cone of directions bounding the coefficients whose
+// angles carry a slack far above their rounding (normal_cone.hpp, kAngleSlack); d and c are
+// arbitrary doubles, so their rounding does not matter. The winding number is counted exactly
+// as the crossings of one ray, every vertex's side certified (contour.hpp). Whether a node's
+// chain is one simple cycle (NodeBoundaries) is only a cheap filter: (ii) implies it.
 //
 // LITERATURE. Volino and Magnenat-Thalmann (1994) introduced the test: normals in a cone of
 // half-angle below 90 degrees plus a projected contour that does not cross itself, for one
@@ -82,38 +86,54 @@
 
 namespace sscc::detail {
 
+/// Nodes with fewer triangles are not tested on their own: a leaf's few pairs cost less than
+/// the contour test (measured on the lion and the elephant: testing leaves made the query
+/// slower). Lower: more culls, each saving less than it costs; higher: fewer culls.
+inline constexpr int kSmallestConeNode = kMaxLeafTriangles + 1;
+/// Pairs of nodes are tested together only when each has at least this many triangles: the
+/// union's contour costs more than descending to a few leaf pairs (measured: unions of small
+/// nodes doubled the query's time on the elephant at amplitude 0.01; from 32 the cost and the
+/// saving about balance). Lower: more pair culls, costlier; higher: fewer.
+inline constexpr int kSmallestUnionPart = 32;
+
 /// The cull for one query. Positions x0, x1 belong to the caller, who computes a triangle's
 /// vertices when asked through `ensure_triangle` (the triangle's position in the hierarchy's
-/// order); nothing here outlives the query.
+/// order); nothing here outlives the query. Cones are built bottom-up, once per node reached:
+/// a leaf's from its triangles' Bernstein coefficients, a parent's from its children's cones
+/// (normal_cone.hpp), so a node's cone costs O(1) once its children's are known and a pair's
+/// union costs O(1).
 class PatchCull {
  public:
   using EnsureTriangle = std::function<void(int)>;
   PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
             const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle);
 
-  /// Whether node n's triangles provably never touch one another during the step.
+  /// Whether node n's triangles provably never touch one another during the step (tried for
+  /// nodes of at least kSmallestConeNode triangles).
   bool cannot_self_touch(int n);
-  /// Whether the union of the disjoint nodes a and b provably has no touching pair (tried only
-  /// when each passes the cone test on its own, the union being then likely to).
+  /// Whether the union of the disjoint nodes a and b provably has no touching pair (tried when
+  /// each is a disc of at least kSmallestUnionPart triangles whose normals stay in a
+  /// half-space).
   bool cannot_touch(int a, int b);
 
  private:
-  const BernsteinNormals& normals(int i);
-  /// The sum over n's triangles of their normals at both ends (area-weighted): the cone axis.
-  const Eigen::Vector3d& axis(int n);
-  /// Whether every triangle of n has d . n_T(t) > 0 over the step.
-  bool cone_holds(const Eigen::Vector3d& d, int n);
-  /// Whether n's triangles pass the cone test about n's own axis (cached).
-  bool own_cone_holds(int n);
+  /// A node's normal cone and the sum of its triangles' coefficient vectors (area-weighted
+  /// normals, the axis of its parent's cone).
+  struct NodeCone {
+    NormalCone cone;
+    Eigen::Vector3d normal_sum;
+  };
+  const NodeCone& cone(int n);
+  int triangle_count(int n) const;
+  NodeCone leaf_cone(const SubspaceBvh::Node& leaf);
 
   const SubspaceBvh& bvh_;
   const NodeBoundaries& boundaries_;
   const std::vector<Eigen::Vector3d>& x0_;
   const std::vector<Eigen::Vector3d>& x1_;
   EnsureTriangle ensure_triangle_;
-  LazyBoxes<BernsteinNormals> normals_;  // by position in the hierarchy's triangle order
-  LazyBoxes<Eigen::Vector3d> axes_;
-  std::vector<signed char> own_cone_;  // -1 unknown, 0 fails, 1 holds
+  LazyBoxes<NodeCone> cones_;
+  std::vector<DirectedEdge> union_chain_;  // scratch of cannot_touch
 };
 
 }  // namespace sscc::detail

@@ -196,3 +196,59 @@ TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour o
   sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
   CHECK(cull.cannot_self_touch(0));
 }
+
+TEST_CASE("normal cones: every node and node pair the cull accepts has no touching pair under brute force",
+          "[patch_cull]") {
+  int accepted_nodes = 0, accepted_pairs = 0;
+  std::vector<Keyframes> all = cases();
+  // A finer fold, for nodes large enough to be tested in pairs (kSmallestUnionPart).
+  all.push_back({"fine folding sheet", 40, 12, false, false, {}});
+  for (double degrees : {0.0, 60.0, 120.0, 179.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  for (const Keyframes& c : all) {
+    std::vector<std::vector<Vector3d>> frames;
+    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+    const sscc::SubspaceModel model =
+        sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const int modes = model.mode_count();
+    const auto& nodes = bvh.nodes();
+    for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) {
+      const auto x0 = model.deformed_positions(sscc::test::keyframe_q(modes, k));
+      const auto x1 = model.deformed_positions(sscc::test::keyframe_q(modes, k + 1));
+      sscc::detail::PatchCull cull(bvh, boundaries, x0, x1, [](int) {});
+      // No non-adjacent pair among the triangles at positions [begin, end) and [begin2, end2)
+      // (the same range twice for a node alone) touches during the step.
+      const auto no_contact = [&](int begin, int end, int begin2, int end2) {
+        for (int i = begin; i < end; ++i) {
+          for (int j = std::max(begin2, begin == begin2 ? i + 1 : begin2); j < end2; ++j) {
+            const int a = bvh.triangle_order()[i], b = bvh.triangle_order()[j];
+            if (mesh.adjacent(a, b)) continue;
+            if (sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]) <= 1.0) {
+              return false;
+            }
+          }
+        }
+        return true;
+      };
+      INFO(c.name << ": keyframe " << k << " to " << k + 1);
+      for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+        if (!cull.cannot_self_touch(n)) continue;
+        ++accepted_nodes;
+        REQUIRE(no_contact(nodes[n].triangle_begin, nodes[n].triangle_end, nodes[n].triangle_begin, nodes[n].triangle_end));
+      }
+      for (int a = 0; a < static_cast<int>(nodes.size()); ++a) {
+        for (int b = a + 1; b < static_cast<int>(nodes.size()); ++b) {
+          const bool disjoint = nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+          if (!disjoint || !cull.cannot_touch(a, b)) continue;
+          ++accepted_pairs;
+          // Pairs within each node are the node's own test; here the pairs across.
+          REQUIRE(no_contact(nodes[a].triangle_begin, nodes[a].triangle_end, nodes[b].triangle_begin, nodes[b].triangle_end));
+        }
+      }
+    }
+  }
+  CHECK(accepted_nodes > 10);
+  CHECK(accepted_pairs > 10);
+}
