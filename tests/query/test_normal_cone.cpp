@@ -125,3 +125,68 @@ TEST_CASE("normal cone: certified signs of triple products agree with exact arit
   }
   CHECK(decided > 2000);
 }
+
+namespace {
+
+/// Whether the exact vector N lies within `cone` (angle to the axis at most its half-angle h),
+/// decided in rationals: axis . N >= cos(h) |axis| |N|, squared with the signs in mind, with
+/// the double cos(h) (the cones carry a slack of 1e-9 radians, far above its rounding).
+bool exactly_within(const sscc::detail::NormalCone& cone, const Exact3& n) {
+  const Exact3 axis = exact(cone.axis);
+  const mpq_class along = dot(axis, n);
+  const mpq_class c(std::cos(cone.half_angle));
+  const mpq_class bound = c * c * dot(axis, axis) * dot(n, n);
+  if (c >= 0) return along > 0 && along * along >= bound;
+  return along >= 0 || along * along <= bound;
+}
+
+/// The exact Bernstein coefficient vectors of a moving triangle.
+std::array<Exact3, 3> exact_coefficient_vectors(const std::array<Vector3d, 6>& x) {
+  const Exact3 e1_0 = minus(exact(x[1]), exact(x[0])), e2_0 = minus(exact(x[2]), exact(x[0]));
+  const Exact3 e1_1 = minus(exact(x[4]), exact(x[3])), e2_1 = minus(exact(x[5]), exact(x[3]));
+  const Exact3 a = cross(e1_0, e2_1), b = cross(e1_1, e2_0);
+  return {cross(e1_0, e2_0), Exact3{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}, cross(e1_1, e2_1)};
+}
+
+}  // namespace
+
+TEST_CASE("normal cone: cones of coefficients and merged cones hold every exact coefficient", "[normal_cone]") {
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int narrow = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    // Four groups of four moving triangles facing roughly one way (some nearly degenerate).
+    std::array<sscc::detail::NormalCone, 4> parts;
+    std::vector<std::array<Exact3, 3>> exact_parts[4];
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    for (int g = 0; g < 4; ++g) {
+      std::array<sscc::detail::BernsteinNormals, 4> normals;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int i = 0; i < 4; ++i) {
+        std::array<Vector3d, 6> x = random_moving_triangle(rng, trial % 3 == 0 && i == 1 ? 1 : 0);
+        for (Vector3d& p : x) p.z() *= 0.2;  // flattened: normals near the z axis
+        if ((x[1] - x[0]).cross(x[2] - x[0]).z() < 0) std::swap(x[1], x[2]), std::swap(x[4], x[5]);
+        normals[i] = sscc::detail::bernstein_normals(x[0], x[1], x[2], x[3], x[4], x[5]);
+        sum += normals[i].value[0] + normals[i].value[1] + normals[i].value[2];
+        exact_parts[g].push_back(exact_coefficient_vectors(x));
+      }
+      const Eigen::Vector3d axis = trial % 5 == 0 ? Eigen::Vector3d(unit(rng), unit(rng), unit(rng)) : sum;
+      parts[g] = sscc::detail::cone_of(axis, normals.data(), normals.data() + 4);
+      total += sum;
+      INFO("trial " << trial << " group " << g);
+      if (parts[g].half_angle > M_PI) continue;  // holds everything
+      ++narrow;
+      for (const auto& coefficients : exact_parts[g]) {
+        for (const Exact3& n : coefficients) REQUIRE(exactly_within(parts[g], n));
+      }
+    }
+    const sscc::detail::NormalCone merged = sscc::detail::merged_cone(total, parts.data(), parts.data() + 4);
+    if (merged.half_angle > M_PI) continue;
+    for (int g = 0; g < 4; ++g) {
+      for (const auto& coefficients : exact_parts[g]) {
+        for (const Exact3& n : coefficients) REQUIRE(exactly_within(merged, n));
+      }
+    }
+  }
+  CHECK(narrow > 400);
+}
