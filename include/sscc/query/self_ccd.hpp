@@ -14,8 +14,10 @@
 // With certificates (SSCC paper, Algorithm 1 made continuous): s = max(||q0||_M, ||q1||_M)
 // is computed once per step; intra(n) returns when s < R_n and inter(a, b) of siblings when
 // s < R_ab (the ellipsoid is convex, so the whole step lies inside it). A step with s below
-// the root's radius costs O(r). Certificates switched off (or absent) give the traditional
-// query: the same code, so the reports are identical and speedups compare like with like.
+// the root's radius costs O(r). Normal cones (on by default) skip nodes and pairs of nodes
+// proven free of self-contact over the step (src/query/patch_cull.hpp). Certificates and
+// cones switched off give the traditional query: the same code, so the reports are
+// identical and speedups compare like with like.
 // The certificates' guarantee is for the exact positions; see certificates.hpp.
 //
 // A built detector is immutable; query() keeps its scratch per call and is thread-safe.
