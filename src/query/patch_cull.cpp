@@ -48,7 +48,7 @@ const PatchCull::NodeCone& PatchCull::cone(int n) {
 int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin; }
 
 bool PatchCull::cannot_self_touch(int n) {
-  if (triangle_count(n) < kSmallestConeNode) return false;
+  if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > kLargestConeNode) return false;
   if (!boundaries_.simple_cycle(n)) return false;
   const NormalCone& own = cone(n).cone;
   return own.within_half_space() && winds_once_star_shaped(own.axis, boundaries_.chain(n), x0_, x1_);
@@ -57,7 +57,10 @@ bool PatchCull::cannot_self_touch(int n) {
 bool PatchCull::cannot_touch(int a, int b) {
   // Each a disc (so every boundary edge has multiplicity one) whose normals stay in a
   // half-space: the union then often is one too.
-  if (std::min(triangle_count(a), triangle_count(b)) < kSmallestUnionPart) return false;
+  if (std::min(triangle_count(a), triangle_count(b)) < kSmallestUnionPart ||
+      std::max(triangle_count(a), triangle_count(b)) > kLargestConeNode) {
+    return false;
+  }
   if (!boundaries_.simple_cycle(a) || !boundaries_.simple_cycle(b)) return false;
   const NodeCone& cone_a = cone(a);
   const NodeCone& cone_b = cone(b);
