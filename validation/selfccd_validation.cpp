@@ -46,10 +46,15 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   if (!certificates && std::find(o.methods.begin(), o.methods.end(), "sscc") != o.methods.end()) {
     throw std::invalid_argument("method sscc needs --certificates FILE.sscc (from sscc precompute)");
   }
-  // One detector: "traditional" is the same query with the certificates switched off.
+  // One detector: "traditional" is the same query with the certificates and the normal cones
+  // switched off, "cones" with the certificates off.
   const SelfCcd ccd = certificates ? SelfCcd(bvh, *certificates) : SelfCcd(bvh);
   SelfCcdOptions traditional;
   traditional.use_certificates = false;
+  traditional.use_normal_cones = false;
+  SelfCcdOptions cones;
+  cones.use_certificates = false;
+  cones.use_normal_cones = true;
   const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed, o.burst);
   std::map<std::string, MethodRun> runs;
   long problems = 0;
@@ -60,15 +65,16 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
     if (method == "fcl") fcl = std::make_unique<FclSelfCcd>(model.mesh());
     for (int k = 0; k < o.steps; ++k) {
       const auto start = std::chrono::steady_clock::now();
-      if (method == "sscc" || method == "traditional" || method == "exhaustive") {
+      if (method == "sscc" || method == "cones" || method == "traditional" || method == "exhaustive") {
         run.reports.push_back(method == "sscc"          ? ccd.query(q[k], q[k + 1])
+                              : method == "cones"       ? ccd.query(q[k], q[k + 1], cones)
                               : method == "traditional" ? ccd.query(q[k], q[k + 1], traditional)
                                                         : ccd.query_exhaustive(q[k], q[k + 1]));
         run.pairs.push_back(pair_list(run.reports.back()));
       } else if (method == "fcl") {
         run.pairs.push_back(fcl->step(model.deformed_positions(q[k]), model.deformed_positions(q[k + 1])));
       } else {
-        throw std::invalid_argument("unknown method '" + method + "' (sscc, traditional, exhaustive, fcl)");
+        throw std::invalid_argument("unknown method '" + method + "' (sscc, cones, traditional, exhaustive, fcl)");
       }
       run.milliseconds.push_back(
           1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -86,7 +92,37 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       for (const SelfCcdReport& report : run.reports) certified += report.stats.root_certified;
       out << " certified_steps=" << certified;
     }
+    if (!run.reports.empty()) {
+      double node_tests = 0.0, triangle_pairs = 0.0, cone_culled = 0.0;
+      for (const SelfCcdReport& report : run.reports) {
+        node_tests += static_cast<double>(report.stats.box_tests) / o.steps;
+        triangle_pairs += static_cast<double>(report.stats.triangle_pairs) / o.steps;
+        cone_culled += static_cast<double>(report.stats.cone_culled) / o.steps;
+      }
+      std::snprintf(line, sizeof line, " node_tests_per_step=%.0f triangle_pairs_per_step=%.0f cone_culls_per_step=%.0f",
+                    node_tests, triangle_pairs, cone_culled);
+      out << line;
+    }
     out << '\n';
+  }
+  // Time ratios of each method against the slower ones on the same steps (sscc against
+  // traditional has its own lines below).
+  const std::vector<std::string> ladder = {"sscc", "cones", "traditional", "fcl"};
+  for (std::size_t i = 0; i < ladder.size(); ++i) {
+    for (std::size_t j = i + 1; j < ladder.size(); ++j) {
+      const std::string& fast = ladder[i];
+      const std::string& slow = ladder[j];
+      if (!runs.count(fast) || !runs.count(slow) || (fast == "sscc" && slow == "traditional")) continue;
+      double fast_total = 0.0, slow_total = 0.0;
+      for (int k = 0; k < o.steps; ++k) {
+        fast_total += runs[fast].milliseconds[k];
+        slow_total += runs[slow].milliseconds[k];
+      }
+      char line[160];
+      std::snprintf(line, sizeof line, "speedup %s vs %s: mean_time_ratio=%.2f", fast.c_str(), slow.c_str(),
+                    slow_total / fast_total);
+      out << line << '\n';
+    }
   }
   if (runs.count("sscc")) {
     // The cost of a step the root certificate decides, timed over many repeats of one.

@@ -11,8 +11,10 @@
 #include <tuple>
 
 #include "common/finite.hpp"
+#include "query/contour.hpp"
 #include "query/descent.hpp"
 #include "query/feature_hits.hpp"
+#include "query/patch_cull.hpp"
 #include "query/sweep.hpp"
 #include "sscc/ccd/kernels.hpp"
 
@@ -54,9 +56,9 @@ SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
  public:
-  /// s = max(||q_hat0||, ||q_hat1||).
+  /// s = max(||q_hat0||, ||q_hat1||). `boundaries` null: no normal-cone cull.
   StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
-              const SelfCcdOptions& options)
+              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
@@ -72,13 +74,19 @@ class StepContext {
         subspace_boxes_(bvh.nodes().size()),
         node_sweeps_(bvh.nodes().size()),
         triangle_sweeps_(mesh_.triangle_count()),
-        hits_(options.mode) {}
+        hits_(options.mode) {
+    if (boundaries && options.use_normal_cones && separation_ == 0.0) {
+      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, [this](int i) {
+        for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
+      });
+    }
+  }
 
   /// Given positions at both ends (the traditional query on poses the subspace does not
   /// hold): every vertex known, boxes refitted.
   StepContext(const SubspaceBvh& bvh, std::vector<Eigen::Vector3d> x0, std::vector<Eigen::Vector3d> x1,
-              const SelfCcdOptions& options)
-      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options) {
+              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries)
+      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, boundaries) {
     x0_ = std::move(x0);
     x1_ = std::move(x1);
     std::fill(computed_.begin(), computed_.end(), 1);
@@ -97,6 +105,9 @@ class StepContext {
   }
   bool stopped() const { return hits_.stopped(); }
   SelfCcdStats& stats() { return stats_; }
+  /// The normal-cone cull (patch_cull.hpp) of a node, and of the union of two nodes.
+  bool node_cannot_self_touch(int n) { return patch_cull_ && patch_cull_->cannot_self_touch(n); }
+  bool nodes_cannot_touch(int a, int b) { return patch_cull_ && patch_cull_->cannot_touch(a, b); }
 
   /// Whether the triangle at position i of the BVH's order can touch anything in node n:
   /// the cheap test that prunes a leaf pair's triangle loops.
@@ -262,11 +273,13 @@ class StepContext {
   LazyBoxes<Sweep> triangle_sweeps_;  // by position in the BVH's triangle order
   FeatureHits<FeatureContact> hits_;
   SelfCcdStats stats_;
+  std::unique_ptr<detail::PatchCull> patch_cull_;  // null: no normal-cone cull
 };
 
 /// Self-traversal (SSCC paper, Algorithm 1): intra(n) tests the node against itself,
 /// inter(a, b) two disjoint nodes whose boxes overlap; with certificates, a node or sibling
-/// pair whose radius exceeds s is skipped.
+/// pair whose radius exceeds s is skipped; with normal cones, a node or node pair proven free
+/// of self-contact (patch_cull.hpp).
 template <typename Context>
 class Traversal {
  public:
@@ -278,6 +291,10 @@ class Traversal {
     if (context_.stopped()) return;
     if (certificates_ && s_ < certificates_->node_radius(n)) {
       ++context_.stats().certified;
+      return;
+    }
+    if (context_.node_cannot_self_touch(n)) {
+      ++context_.stats().cone_culled;
       return;
     }
     ++context_.stats().nodes_visited;
@@ -301,6 +318,10 @@ class Traversal {
       return;
     }
     if (!context_.nodes_overlap(a, b)) return;
+    if (context_.nodes_cannot_touch(a, b)) {
+      ++context_.stats().cone_culled;
+      return;
+    }
     ++context_.stats().nodes_visited;
     const SubspaceBvh::Node& na = bvh_.nodes()[a];
     const SubspaceBvh::Node& nb = bvh_.nodes()[b];
@@ -335,6 +356,8 @@ class DiscreteContext {
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
+  bool node_cannot_self_touch(int) const { return false; }  // the cones are a continuous cull
+  bool nodes_cannot_touch(int, int) const { return false; }
   bool triangle_meets_node(int, int) const { return true; }
 
   /// The triangles at positions i and j of the BVH's order.
@@ -391,6 +414,7 @@ SelfCcd::SelfCcd(std::shared_ptr<const SubspaceBvh> bvh, std::shared_ptr<const C
     : bvh_(std::move(bvh)), certificates_(std::move(certificates)) {
   if (!bvh_) throw std::invalid_argument("SelfCcd: no hierarchy");
   if (certificates_) certificates_->check_belongs_to(*bvh_);
+  boundaries_ = std::make_shared<const detail::NodeBoundaries>(*bvh_);
 }
 
 namespace {
@@ -424,7 +448,7 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   const double s = std::max(q_hat0.stableNorm(), q_hat1.stableNorm());
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
-  StepContext context(*bvh_, q_hat0, q_hat1, s, options);
+  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get());
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
@@ -447,7 +471,7 @@ SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, c
   }
   SelfCcdOptions refit = options;
   refit.bounds = NodeBounds::kRefit;
-  StepContext context(*bvh_, x0, x1, refit);
+  StepContext context(*bvh_, x0, x1, refit, boundaries_.get());
   Traversal<StepContext>(*bvh_, context, nullptr, 0.0).intra(0);
   return context.finish(start);
 }
@@ -468,7 +492,8 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const auto start = std::chrono::steady_clock::now();
   const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
-  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options);
+  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options,
+                      nullptr);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
     for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);

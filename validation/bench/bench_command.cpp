@@ -1,5 +1,7 @@
 #include "bench/bench_command.hpp"
+#include "bench/self_ccd_table.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -50,6 +52,7 @@ std::vector<EpsilonRow> epsilon_sweep(const SceneRun& run, std::ostream& progres
   const SelfCcd traditional_detector(bvh);
   SelfCcdOptions traditional;
   traditional.use_certificates = false;
+  traditional.use_normal_cones = false;
   std::vector<std::vector<SelfCcdReport>> reference;
   long traditional_visits = 0;
   for (const auto& step : run.recorded) {
@@ -141,11 +144,46 @@ SceneRun bench_scene(const std::string& scene, const BenchOptions& o, bool discr
   return run_scene(s, progress);
 }
 
+/// The self-CCD table on every mesh in the folder (none when it is absent), as Markdown, and
+/// the number of rows where cones and traditional disagree.
+std::pair<std::string, long> self_ccd_section(const BenchOptions& o, std::ostream& progress) {
+  const std::string dir = o.meshes_dir.empty() ? data_dir() + "/../../shared/data/meshes" : o.meshes_dir;
+  SelfCcdTableOptions table;
+  table.steps = o.table_steps;
+  table.seed = o.seed;
+  if (fs::is_directory(dir)) {
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.path().extension() == ".off") table.meshes.push_back(entry.path().string());
+    }
+  }
+  std::sort(table.meshes.begin(), table.meshes.end());
+  if (table.meshes.empty()) {
+    progress << "bench: no meshes in " << dir << ": no self-CCD table\n";
+    return {"", 0};
+  }
+  const std::vector<SelfCcdTableRow> rows = self_ccd_table(table, progress);
+  long disagreements = 0;
+  for (const SelfCcdTableRow& r : rows) disagreements += !r.identical;
+  std::ostringstream md;
+  md << "\nSelf-CCD per mesh (" << table.basis << ", random trajectories, " << table.steps
+     << " steps per row, FCL on the first " << std::min(table.fcl_steps, table.steps)
+     << "; one thread; mean ms per step; traditional: swept boxes only, cones: with the normal-cone culls):\n\n"
+     << self_ccd_table_markdown(rows);
+  return {md.str(), disagreements};
+}
+
 }  // namespace
 
 long run_bench(const BenchOptions& o, std::ostream& out, std::ostream& progress) {
   fs::create_directories(o.output_dir);
   const auto start = std::chrono::steady_clock::now();
+  if (o.self_ccd_table_only) {
+    const auto [md, disagreements] = self_ccd_section(o, progress);
+    std::ofstream(o.output_dir + "/bench_self_ccd.md") << md;
+    out << md << "\nbench: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+        << " s; table in " << o.output_dir << "/bench_self_ccd.md; disagreements " << disagreements << '\n';
+    return disagreements;
+  }
   const SceneRun bunnies = bench_scene("bunnies", o, true, progress);
   const SceneRun spring = bench_scene("spring", o, false, progress);
   const bool have_dragon = fs::exists(data_dir() + "/../../shared/data/meshes/ChineseDragon-10kv.off");
@@ -198,9 +236,11 @@ long run_bench(const BenchOptions& o, std::ostream& out, std::ostream& progress)
     md << "| " << format("%.0e", t.tolerance) << " | " << format("%.3f us", t.vertex_face_us) << " | "
        << format("%.3f us", t.edge_edge_us) << " |\n";
   }
+  const auto [self_ccd_md, self_ccd_disagreements] = self_ccd_section(o, progress);
+  md << self_ccd_md;
   std::ofstream(o.output_dir + "/bench.md") << md.str();
   out << md.str();
-  long disagreements = (bunnies.steps - bunnies.identical_steps) + (bunnies.steps - bunnies.identical_discrete_steps) +
+  long disagreements = self_ccd_disagreements + (bunnies.steps - bunnies.identical_steps) + (bunnies.steps - bunnies.identical_discrete_steps) +
                        (spring.steps - spring.identical_steps) + (dragon.steps - dragon.identical_steps);
   for (const EpsilonRow& r : epsilons) disagreements += !r.identical;
   out << "\nbench: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()

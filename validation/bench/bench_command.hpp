@@ -11,8 +11,11 @@
 //    the traditional query's).
 //  - Run time against error of the kernels: time per query against the time-of-impact
 //    tolerance.
+//  - The self-CCD table (self_ccd_table.hpp): traditional, normal cones and FCL on every mesh
+//    of ../shared/data/meshes at three amplitudes.
 // Writes bench.md (the Markdown tables), CSV files and PNG plots into the output folder and
-// prints the tables. Returns the number of disagreements between SSCC and traditional.
+// prints the tables. Returns the number of disagreements between SSCC and traditional (and
+// between cones and traditional in the self-CCD table).
 #pragma once
 
 #include <cstdint>
@@ -27,6 +30,9 @@ struct BenchOptions {
   std::string cache_dir = "demo-cache";
   std::string output_dir = "bench-output";
   long kernel_queries = 20000;  ///< per kind, for the tolerance sweep
+  std::string meshes_dir;       ///< the self-CCD table's meshes; "" is ../shared/data/meshes
+  int table_steps = 3;          ///< per mesh and amplitude in the self-CCD table
+  bool self_ccd_table_only = false;
 };
 
 long run_bench(const BenchOptions& options, std::ostream& out, std::ostream& progress);

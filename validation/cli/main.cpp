@@ -101,6 +101,10 @@ const char* kUsage =
     "            --seed S --cache DIR   as for demo\n"
     "            --kernel-queries N     random kernel queries per kind (default 20000)\n"
     "            --output DIR           default bench-output\n"
+    "            the self-CCD table: traditional, normal cones and FCL on every mesh of\n"
+    "            --meshes DIR (default ../shared/data/meshes) at amplitudes 0.01, 0.05, 0.2\n"
+    "            --table-steps N        steps per mesh and amplitude (default 3)\n"
+    "            --only self-ccd        run only that table\n"
     "  decimate  quadric edge collapse of a mesh to a triangle count (OpenMesh)\n"
     "            --mesh FILE --triangles N (default 15000) --output FILE.off\n"
     "  selfccd   continuous self-collision over a seeded random trajectory\n"
@@ -111,7 +115,8 @@ const char* kUsage =
     "            --burst B              every 100 steps the amplitude swells to B times A\n"
     "                                   and back over 10 steps\n"
     "            --certificates FILE    certificate file from precompute (method sscc)\n"
-    "            --methods LIST         comma-separated: sscc, traditional, exhaustive, fcl\n"
+    "            --methods LIST         comma-separated: sscc (certificates and normal cones), cones\n"
+    "                                   (normal cones only), traditional (neither), exhaustive, fcl\n"
     "  poses     subspace from example poses, end to end: seeded synthetic poses (twist, bend,\n"
     "            polynomial modes), PCA, key points, sound certificates and the EXPERIMENTAL,\n"
     "            NOT CONSERVATIVE regression-predicted culling, false culls side by side\n"
@@ -369,13 +374,21 @@ int run_demo(const std::vector<std::string>& args) {
 }
 
 int run_bench(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(args, {"--steps", "--seed", "--cache", "--kernel-queries", "--output"}, "bench");
+  const Flags flags = parse_flags(
+      args, {"--steps", "--seed", "--cache", "--kernel-queries", "--output", "--meshes", "--table-steps", "--only"},
+      "bench");
   sscc::validation::BenchOptions options;
   if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
   if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
   if (flags.has("--cache")) options.cache_dir = flags.text("--cache");
   if (flags.has("--kernel-queries")) options.kernel_queries = flags.number<long>("--kernel-queries");
   if (flags.has("--output")) options.output_dir = flags.text("--output");
+  if (flags.has("--meshes")) options.meshes_dir = flags.text("--meshes");
+  if (flags.has("--table-steps")) options.table_steps = flags.number<int>("--table-steps");
+  if (flags.has("--only")) {
+    if (flags.text("--only") != "self-ccd") usage_error("--only takes self-ccd");
+    options.self_ccd_table_only = true;
+  }
   return run_report(options, flags.quiet, sscc::validation::run_bench, "bench");
 }
 

@@ -133,8 +133,11 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
            << " s; " << model.mesh().triangle_count() << " triangles, " << model.mode_count()
            << " modes; root certificate radius " << run.assets.certificates->node_radius(0) << '\n';
 
-  SceneOptions with, without;
+  SceneOptions with, without, cones_only;
+  cones_only.use_certificates = false;
+  cones_only.use_normal_cones = true;
   without.use_certificates = false;
+  without.use_normal_cones = false;  // traditional: the plain swept-box query
   SelfCcdOptions discrete_with, discrete_without;
   discrete_without.use_certificates = false;
   std::vector<std::vector<ObjectStep>> sampled;  // the steps FCL sees
@@ -158,7 +161,10 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     t = std::chrono::steady_clock::now();
     const SceneReport slow = scene.step(steps, without);
     add_run(run.traditional, slow, milliseconds_since(t));
-    run.identical_steps += same_reports(fast, slow);
+    t = std::chrono::steady_clock::now();
+    const SceneReport culled = scene.step(steps, cones_only);
+    add_run(run.cones, culled, milliseconds_since(t));
+    run.identical_steps += same_reports(fast, slow) && same_reports(culled, slow);
     run.object_steps_certified += fast.stats.objects_certified;
     run.object_steps_traversed += fast.stats.objects_traversed;
     run.all_certified_steps += fast.stats.objects_traversed == 0;
@@ -176,7 +182,8 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     }
     if ((k + 1) % 50 == 0 || k + 1 == o.steps) {
       progress << "scene " << o.scene << ": step " << (k + 1) << "/" << o.steps << ", SSCC " << run.sscc.mean()
-               << " ms, traditional " << run.traditional.mean() << " ms per step so far\n"
+               << " ms, cones " << run.cones.mean() << " ms, traditional " << run.traditional.mean()
+               << " ms per step so far\n"
                << std::flush;
     }
   }

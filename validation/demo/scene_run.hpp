@@ -61,8 +61,9 @@ struct SceneRun {
   double dt = 0.0;
   DemoAssets assets;
   MethodTimes sscc, traditional;
+  MethodTimes cones;                 ///< no certificates, normal cones (the traversal's own culls)
   MethodTimes discrete_sscc, discrete_traditional;  ///< empty unless options.discrete
-  int identical_steps = 0;           ///< SSCC and traditional reports identical
+  int identical_steps = 0;           ///< SSCC, cones and traditional reports identical
   int identical_discrete_steps = 0;
   int all_certified_steps = 0;       ///< no object needed a traversal
   long object_steps_certified = 0, object_steps_traversed = 0;

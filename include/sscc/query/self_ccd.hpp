@@ -14,8 +14,10 @@
 // With certificates (SSCC paper, Algorithm 1 made continuous): s = max(||q0||_M, ||q1||_M)
 // is computed once per step; intra(n) returns when s < R_n and inter(a, b) of siblings when
 // s < R_ab (the ellipsoid is convex, so the whole step lies inside it). A step with s below
-// the root's radius costs O(r). Certificates switched off (or absent) give the traditional
-// query: the same code, so the reports are identical and speedups compare like with like.
+// the root's radius costs O(r). Normal cones (on by default) skip nodes and pairs of nodes
+// proven free of self-contact over the step (src/query/patch_cull.hpp). Certificates and
+// cones switched off give the traditional query: the same code, so the reports are
+// identical and speedups compare like with like.
 // The certificates' guarantee is for the exact positions; see certificates.hpp.
 //
 // A built detector is immutable; query() keeps its scratch per call and is thread-safe.
@@ -32,6 +34,10 @@
 #include "sscc/certificates/certificates.hpp"
 
 namespace sscc {
+
+namespace detail {
+class NodeBoundaries;
+}
 
 enum class FeatureKind : std::uint8_t { kVertexFace, kEdgeEdge };
 
@@ -85,8 +91,17 @@ enum class NodeBounds : std::uint8_t {
 struct SelfCcdOptions {
   SelfCcdMode mode = SelfCcdMode::kAllContacts;
   NodeBounds bounds = NodeBounds::kHybrid;
-  /// Cull by the certificates when the detector has them; false gives the traditional query.
+  /// Cull by the certificates when the detector has them; false (with use_normal_cones false)
+  /// gives the traditional query.
   bool use_certificates = true;
+  /// Skip nodes, and pairs of neighbouring nodes, that form a patch whose normals stay in a
+  /// cone and whose contour stays star-shaped over the step: proven free of self-contact
+  /// (src/query/patch_cull.hpp states the theorem). Exact, like every cull here. Not applied
+  /// with a minimum separation (it proves no contact, not a distance) nor to query_discrete.
+  /// Off by default: on the benchmark meshes it ran at 0.72x to 1.07x the speed of the plain
+  /// traversal (the contour test rejects most of the hierarchy's patches, whose boundaries
+  /// are not star-shaped), so it does not yet pay for itself.
+  bool use_normal_cones = false;
   /// The kernels' options. A minimum separation (kernel.minimum_separation > 0) cannot be
   /// combined with certificates, which bound contact, not proximity: such queries throw.
   ccd::CcdOptions kernel;
@@ -99,6 +114,7 @@ struct SelfCcdStats {
   long kernel_calls = 0;
   long vertices_computed = 0;
   long certified = 0;          ///< nodes and sibling pairs culled by a certificate
+  long cone_culled = 0;        ///< nodes and node pairs culled by the normal-cone test
   bool root_certified = false;  ///< the whole step decided by the root's certificate
   double seconds = 0.0;
 };
@@ -152,6 +168,7 @@ class SelfCcd {
  private:
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
+  std::shared_ptr<const detail::NodeBoundaries> boundaries_;  // the normal-cone cull's static data
 };
 
 }  // namespace sscc

@@ -63,8 +63,9 @@ struct ObjectStep {
 };
 
 /// The options of a step: those of the self queries, applied to every object's self test
-/// (mode for the whole step; use_certificates = false makes every self test the
-/// traditional query; bounds; the kernels' options, also used between objects).
+/// (mode for the whole step; use_certificates and use_normal_cones both false make every
+/// self test the traditional query; bounds; the kernels' options, also used between
+/// objects).
 struct SceneOptions : SelfCcdOptions {};
 
 enum class SelfTestOutcome : std::uint8_t {

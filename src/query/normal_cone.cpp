@@ -1,0 +1,109 @@
+#include "query/normal_cone.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sscc::detail {
+
+namespace {
+
+using Eigen::Vector3d;
+
+/// The cross product e x f and, per component, the sum of the absolute values of its two
+/// products.
+struct CrossWithMagnitude {
+  Vector3d value, magnitude;
+};
+
+CrossWithMagnitude cross_with_magnitude(const Vector3d& e, const Vector3d& f) {
+  const Vector3d ae = e.cwiseAbs();
+  const Vector3d af = f.cwiseAbs();
+  return {e.cross(f), Vector3d(ae.y() * af.z() + ae.z() * af.y(), ae.z() * af.x() + ae.x() * af.z(),
+                               ae.x() * af.y() + ae.y() * af.x())};
+}
+
+/// The error bound of a coefficient whose products sum (in absolute value) to `magnitude`.
+Vector3d error_of(const Vector3d& magnitude) {
+  return (kErrorFactor * kUnitRoundoff * magnitude).array() + kUnderflowAllowance;
+}
+
+}  // namespace
+
+BernsteinNormals bernstein_normals(const Vector3d& a0, const Vector3d& b0, const Vector3d& c0, const Vector3d& a1,
+                                   const Vector3d& b1, const Vector3d& c1) {
+  const Vector3d e1_0 = b0 - a0, e2_0 = c0 - a0;
+  const Vector3d e1_1 = b1 - a1, e2_1 = c1 - a1;
+  const CrossWithMagnitude n0 = cross_with_magnitude(e1_0, e2_0);
+  const CrossWithMagnitude n2 = cross_with_magnitude(e1_1, e2_1);
+  const CrossWithMagnitude mixed_01 = cross_with_magnitude(e1_0, e2_1);
+  const CrossWithMagnitude mixed_10 = cross_with_magnitude(e1_1, e2_0);
+  BernsteinNormals n;
+  n.value[0] = n0.value;
+  n.value[1] = 0.5 * (mixed_01.value + mixed_10.value);
+  n.value[2] = n2.value;
+  n.error[0] = error_of(n0.magnitude);
+  n.error[1] = error_of(0.5 * (mixed_01.magnitude + mixed_10.magnitude));
+  n.error[2] = error_of(n2.magnitude);
+  return n;
+}
+
+int certified_sign_of_triple(const Vector3d& d, const Vector3d& w, const Vector3d& p, const Vector3d& c) {
+  const CrossWithMagnitude wv = cross_with_magnitude(w, p - c);
+  const Vector3d error = error_of(wv.magnitude);
+  if (certainly_positive(d, wv.value, error)) return 1;
+  if (certainly_positive(-d, wv.value, error)) return -1;
+  return 0;
+}
+
+}  // namespace sscc::detail
+
+namespace sscc::detail {
+
+namespace {
+
+bool normalised(const Eigen::Vector3d& v, Eigen::Vector3d& out) {
+  const double length = v.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) return false;
+  out = v / length;
+  return true;
+}
+
+}  // namespace
+
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+NormalCone cone_of(const Eigen::Vector3d& axis, const BernsteinNormals* begin, const BernsteinNormals* end) {
+  // For an exact N within |E| of the computed one, |d x N| <= |d x N_c| + |E| and
+  // d . N >= d . N_c - |E| (|d| = 1), so while the latter is positive the angle between d and
+  // N is at most atan2(|d x N_c| + |E|, d . N_c - |E|). The largest such angle is kept by its
+  // tangent (a monotone choice: a rounding slip picks an angle within an ulp of the largest).
+  NormalCone cone;
+  if (!normalised(axis, cone.axis)) return cone;
+  double widest_across = 0.0, widest_along = 1.0;
+  for (const BernsteinNormals* n = begin; n != end; ++n) {
+    for (int k = 0; k < 3; ++k) {
+      const double error = n->error[k].norm();
+      const double along = cone.axis.dot(n->value[k]) - error;
+      const double across = cone.axis.cross(n->value[k]).norm() + error;
+      if (!(along > 0.0)) return cone;  // NaN fails too
+      if (across * widest_along > widest_across * along) widest_across = across, widest_along = along;
+    }
+  }
+  cone.half_angle = std::atan2(widest_across, widest_along) + kAngleSlack;
+  return cone;
+}
+
+NormalCone merged_cone(const Eigen::Vector3d& axis, const NormalCone* begin, const NormalCone* end) {
+  NormalCone cone;
+  if (!normalised(axis, cone.axis)) return cone;
+  double widest = 0.0;
+  for (const NormalCone* part = begin; part != end; ++part) {
+    widest = std::max(widest, angle_between(cone.axis, part->axis) + part->half_angle + kAngleSlack);
+  }
+  cone.half_angle = widest;
+  return cone;
+}
+
+}  // namespace sscc::detail

@@ -1,0 +1,94 @@
+#include "query/patch_cull.hpp"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace sscc::detail {
+
+PatchCull::PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
+                     const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle)
+    : bvh_(bvh),
+      boundaries_(boundaries),
+      x0_(x0),
+      x1_(x1),
+      ensure_triangle_(std::move(ensure_triangle)),
+      cones_(bvh.nodes().size()) {}
+
+PatchCull::NodeCone PatchCull::leaf_cone(const SubspaceBvh::Node& leaf) {
+  std::array<BernsteinNormals, kMaxLeafTriangles> normals;
+  NodeCone result{NormalCone{}, Eigen::Vector3d::Zero()};
+  for (int i = leaf.triangle_begin; i < leaf.triangle_end; ++i) {
+    ensure_triangle_(i);
+    const Triangle& t = bvh_.model().mesh().triangles()[bvh_.triangle_order()[i]];
+    BernsteinNormals& n = normals[i - leaf.triangle_begin];
+    n = bernstein_normals(x0_[t[0]], x0_[t[1]], x0_[t[2]], x1_[t[0]], x1_[t[1]], x1_[t[2]]);
+    result.normal_sum += n.value[0] + n.value[1] + n.value[2];
+  }
+  result.cone = cone_of(result.normal_sum, normals.data(), normals.data() + (leaf.triangle_end - leaf.triangle_begin));
+  return result;
+}
+
+const PatchCull::NodeCone& PatchCull::cone(int n) {
+  return cones_.get(n, [&](int m) {
+    const SubspaceBvh::Node& node = bvh_.nodes()[m];
+    if (node.is_leaf()) return leaf_cone(node);
+    std::array<NormalCone, kBranchingFactor> parts;
+    NodeCone result{NormalCone{}, Eigen::Vector3d::Zero()};
+    for (int c = 0; c < node.child_count; ++c) {
+      const NodeCone& child = cone(node.first_child + c);
+      parts[c] = child.cone;
+      result.normal_sum += child.normal_sum;
+    }
+    result.cone = merged_cone(result.normal_sum, parts.data(), parts.data() + node.child_count);
+    return result;
+  });
+}
+
+int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin; }
+
+bool PatchCull::cannot_self_touch(int n) {
+  if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > kLargestConeNode) return false;
+  if (!boundaries_.simple_cycle(n)) return false;
+  const NormalCone& own = cone(n).cone;
+  return own.within_half_space() && winds_once_star_shaped(own.axis, boundaries_.chain(n), x0_, x1_);
+}
+
+bool PatchCull::cannot_touch(int a, int b) {
+  // Each a disc (so every boundary edge has multiplicity one) whose normals stay in a
+  // half-space: the union then often is one too.
+  if (std::min(triangle_count(a), triangle_count(b)) < kSmallestUnionPart ||
+      std::max(triangle_count(a), triangle_count(b)) > kLargestConeNode) {
+    return false;
+  }
+  if (!boundaries_.simple_cycle(a) || !boundaries_.simple_cycle(b)) return false;
+  const NodeCone& cone_a = cone(a);
+  const NodeCone& cone_b = cone(b);
+  if (!cone_a.cone.within_half_space() || !cone_b.cone.within_half_space()) return false;
+  const std::array<NormalCone, 2> parts{cone_a.cone, cone_b.cone};
+  const NormalCone joint = merged_cone(cone_a.normal_sum + cone_b.normal_sum, parts.data(), parts.data() + 2);
+  if (!joint.within_half_space()) return false;
+  // The union's boundary: each chain without the edges whose twins the other holds. An edge's
+  // twin is in the other node when the one other triangle on it is (it is then on that node's
+  // boundary), found by position; edges of several twins are looked up.
+  const auto without_twins_in = [&](int n, int other) {
+    const std::vector<DirectedEdge>& chain = boundaries_.chain(n);
+    const std::vector<int>& across = boundaries_.across(n);
+    const SubspaceBvh::Node& node = bvh_.nodes()[other];
+    const std::vector<DirectedEdge>& other_chain = boundaries_.chain(other);
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const bool cancelled =
+          across[k] == NodeBoundaries::kSeveralTwins
+              ? std::binary_search(other_chain.begin(), other_chain.end(), DirectedEdge{chain[k][1], chain[k][0]})
+              : across[k] >= node.triangle_begin && across[k] < node.triangle_end;
+      if (!cancelled) union_chain_.push_back(chain[k]);
+    }
+  };
+  union_chain_.clear();
+  without_twins_in(a, b);
+  if (union_chain_.size() == boundaries_.chain(a).size()) return false;  // no shared edge: not one disc
+  without_twins_in(b, a);
+  return winds_once_star_shaped(joint.axis, union_chain_, x0_, x1_);
+}
+
+}  // namespace sscc::detail

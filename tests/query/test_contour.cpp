@@ -1,0 +1,129 @@
+// Boundary chains from connectivity and the continuous star-shaped contour test, against
+// exact arithmetic on the same doubles.
+#include <catch2/catch.hpp>
+
+#include <gmpxx.h>
+
+#include <cmath>
+#include <random>
+
+#include "query/contour.hpp"
+
+namespace {
+
+using sscc::detail::DirectedEdge;
+using Eigen::Vector3d;
+
+std::vector<DirectedEdge> edges_of(const std::vector<sscc::Triangle>& triangles) {
+  std::vector<DirectedEdge> edges;
+  for (const sscc::Triangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) edges.push_back({t[k], t[(k + 1) % 3]});
+  }
+  return edges;
+}
+
+/// A closed loop of n vertices whose angles about the origin advance by `turns` full turns,
+/// radius varying, in the plane z = height; edges (i, i + 1).
+std::vector<Vector3d> loop(int n, int turns, double height, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> radius(0.5, 1.5);
+  std::vector<Vector3d> x;
+  for (int i = 0; i < n; ++i) {
+    const double angle = 2 * M_PI * turns * i / n;
+    const double r = radius(rng);
+    x.emplace_back(r * std::cos(angle), r * std::sin(angle), height);
+  }
+  return x;
+}
+
+std::vector<DirectedEdge> cycle(int n) {
+  std::vector<DirectedEdge> chain;
+  for (int i = 0; i < n; ++i) chain.push_back({i, (i + 1) % n});
+  return chain;
+}
+
+mpq_class q(double x) { return mpq_class(x); }
+
+/// Exact: every edge turns strictly counter-clockwise about c(t) seen along d at rational t,
+/// and the angles sum to one turn (the crossings of the ray along +x from c(t), counted in
+/// the plane z for d = z).
+bool exactly_star_shaped_once(const std::vector<DirectedEdge>& chain, const std::vector<Vector3d>& x0,
+                              const std::vector<Vector3d>& x1, const mpq_class& t) {
+  // c as the implementation forms it: the double mean at each end.
+  Vector3d c0 = Vector3d::Zero(), c1 = Vector3d::Zero();
+  for (const DirectedEdge& e : chain) c0 += x0[e[0]], c1 += x1[e[0]];
+  c0 /= double(chain.size());
+  c1 /= double(chain.size());
+  const mpq_class cx = q(c0.x()) + t * (q(c1.x()) - q(c0.x())), cy = q(c0.y()) + t * (q(c1.y()) - q(c0.y()));
+  int crossings = 0;
+  for (const DirectedEdge& e : chain) {
+    const mpq_class ax = q(x0[e[0]].x()) + t * (q(x1[e[0]].x()) - q(x0[e[0]].x())) - cx;
+    const mpq_class ay = q(x0[e[0]].y()) + t * (q(x1[e[0]].y()) - q(x0[e[0]].y())) - cy;
+    const mpq_class bx = q(x0[e[1]].x()) + t * (q(x1[e[1]].x()) - q(x0[e[1]].x())) - cx;
+    const mpq_class by = q(x0[e[1]].y()) + t * (q(x1[e[1]].y()) - q(x0[e[1]].y())) - cy;
+    if (ax * by - ay * bx <= 0) return false;
+    crossings += ay < 0 && by >= 0;  // counter-clockwise edges crossing the +x ray
+  }
+  return crossings == 1;
+}
+
+}  // namespace
+
+TEST_CASE("contour: boundary chains cancel twins and keep same-orientation edges twice", "[contour]") {
+  using sscc::detail::boundary_chain;
+  using sscc::detail::is_simple_cycle;
+  // A square of two triangles: the diagonal cancels, four edges remain, one cycle.
+  const auto square = boundary_chain(edges_of({{0, 1, 2}, {0, 2, 3}}));
+  CHECK(square == std::vector<DirectedEdge>{{0, 1}, {1, 2}, {2, 3}, {3, 0}});
+  CHECK(is_simple_cycle(square));
+  // A closed tetrahedron has no boundary.
+  const auto closed = boundary_chain(edges_of({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}));
+  CHECK(closed.empty());
+  CHECK_FALSE(is_simple_cycle(closed));
+  // Inconsistent orientation: the shared edge (0, 2) stays, twice.
+  const auto folded = boundary_chain(edges_of({{0, 1, 2}, {0, 3, 2}}));
+  CHECK(std::count(folded.begin(), folded.end(), DirectedEdge{2, 0}) == 2);
+  CHECK_FALSE(is_simple_cycle(folded));
+  // Two triangles meeting at one vertex (a bow tie) and two apart: not one simple cycle.
+  CHECK_FALSE(is_simple_cycle(boundary_chain(edges_of({{0, 1, 2}, {0, 3, 4}}))));
+  CHECK_FALSE(is_simple_cycle(boundary_chain(edges_of({{0, 1, 2}, {3, 4, 5}}))));
+  // A non-manifold fan: three triangles on edge (0, 1).
+  CHECK_FALSE(is_simple_cycle(boundary_chain(edges_of({{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}))));
+}
+
+TEST_CASE("contour: a loop winding twice, a reversed loop or a non-star loop is refused", "[contour]") {
+  std::mt19937_64 rng(3);
+  const Vector3d up(0, 0, 1);
+  const std::vector<Vector3d> once = loop(12, 1, 0.0, rng);
+  CHECK(sscc::detail::winds_once_star_shaped(up, cycle(12), once, once));
+  CHECK_FALSE(sscc::detail::winds_once_star_shaped(-up, cycle(12), once, once));
+  const std::vector<Vector3d> twice = loop(24, 2, 0.0, rng);  // star-shaped, two turns
+  CHECK_FALSE(sscc::detail::winds_once_star_shaped(up, cycle(24), twice, twice));
+  // A C shape: its vertex mean lies outside the region the whole loop can see.
+  std::vector<Vector3d> c_shape;
+  for (int i = 0; i <= 10; ++i) c_shape.emplace_back(std::cos(0.2 + 5.9 * i / 10), std::sin(0.2 + 5.9 * i / 10), 0);
+  for (int i = 10; i >= 0; --i) c_shape.emplace_back(0.8 * std::cos(0.2 + 5.9 * i / 10), 0.8 * std::sin(0.2 + 5.9 * i / 10), 0);
+  CHECK_FALSE(sscc::detail::winds_once_star_shaped(up, cycle(22), c_shape, c_shape));
+}
+
+TEST_CASE("contour: the star-shaped test against exact arithmetic on moving loops", "[contour]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int accepted = 0, refused = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const int n = 5 + trial % 13;
+    const std::vector<Vector3d> x0 = loop(n, 1 + (trial % 7 == 0), 0.0, rng);
+    std::vector<Vector3d> x1 = x0;
+    const double motion = trial % 3 == 0 ? 1.5 : 0.4;  // large motions fold some edges over
+    for (Vector3d& p : x1) p += motion * Vector3d(unit(rng), unit(rng), unit(rng));
+    const bool passes = sscc::detail::winds_once_star_shaped(Vector3d(0, 0, 1), cycle(n), x0, x1);
+    INFO("trial " << trial);
+    if (passes) {
+      ++accepted;
+      for (int k = 0; k <= 32; ++k) REQUIRE(exactly_star_shaped_once(cycle(n), x0, x1, mpq_class(k, 32)));
+    } else {
+      ++refused;
+    }
+  }
+  CHECK(accepted > 100);
+  CHECK(refused > 100);
+}

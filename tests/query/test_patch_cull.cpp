@@ -1,0 +1,259 @@
+// The normal-cone cull in the traversal against exhaustive testing and an independent brute
+// force, on generated meshes with folds, pinches and touching coils moved through keyframes
+// (steps that end in contact, folds beyond 90 degrees); and the cull itself refusing a
+// patch whose normals stay in a cone but whose contour overlaps itself.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "brute_force.hpp"
+#include "query/patch_cull.hpp"
+#include "sscc/query/self_ccd.hpp"
+#include "support/parametric_meshes.hpp"
+
+namespace {
+
+using Eigen::Vector3d;
+using sscc::test::Surface;
+
+struct Keyframes {
+  std::string name;
+  int nu, nv;
+  bool wrap_u, wrap_v;
+  std::vector<Surface> shapes;  // keyframe k
+};
+
+/// A strip [-1, 1] x [0, 0.6] folded about x = 0 by `angle` (its right half turned up and over).
+Surface folded_sheet(double angle) {
+  return [angle](double u, double v) {
+    const double x = -1.0 + 2.0 * u;
+    if (x <= 0) return Vector3d(x, 0.6 * v, 0.0);
+    return Vector3d(x * std::cos(angle), 0.6 * v, x * std::sin(angle));
+  };
+}
+
+/// A torus (radii 1 and 0.3) whose tube is pinched around u = 0 by `pinch` (1: shut).
+Surface pinched_torus(double pinch) {
+  return [pinch](double u, double v) {
+    const double phi = 2 * M_PI * u, theta = 2 * M_PI * v;
+    const double wrapped = std::remainder(phi, 2 * M_PI);
+    const double r = 0.3 * (1.0 - pinch * std::exp(-(wrapped * wrapped) / 0.15));
+    return Vector3d((1 + r * std::cos(theta)) * std::cos(phi), (1 + r * std::cos(theta)) * std::sin(phi),
+                    r * std::sin(theta));
+  };
+}
+
+/// A tube of radius 0.1 around a helix of radius 1 and `pitch` per turn, 2.5 turns: coils
+/// touch at pitch 0.2.
+Surface helix_tube(double pitch) {
+  return [pitch](double u, double v) {
+    const double phi = 5 * M_PI * u, theta = 2 * M_PI * v;
+    const double h = pitch / (2 * M_PI);
+    const Vector3d centre(std::cos(phi), std::sin(phi), h * phi);
+    const Vector3d tangent = Vector3d(-std::sin(phi), std::cos(phi), h).normalized();
+    const Vector3d outward(std::cos(phi), std::sin(phi), 0.0);
+    const Vector3d binormal = tangent.cross(outward);
+    return Vector3d(centre + 0.1 * (std::cos(theta) * outward + std::sin(theta) * binormal));
+  };
+}
+
+/// A ramp winding 1.5 turns about z (radii 0.5 to 1), rising `pitch` per turn: its normals
+/// stay near the z axis while its projection covers part of the annulus twice.
+Surface spiral_ramp(double pitch) {
+  return [pitch](double u, double v) {
+    const double phi = 3 * M_PI * u, w = 0.5 + 0.5 * v;
+    return Vector3d(w * std::cos(phi), w * std::sin(phi), pitch * phi / (2 * M_PI));
+  };
+}
+
+std::vector<Keyframes> cases() {
+  std::vector<Keyframes> all;
+  all.push_back({"folding sheet", 16, 5, false, false, {}});
+  for (double degrees : {0.0, 45.0, 100.0, 150.0, 175.0, 180.0, 185.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  all.push_back({"pinched torus", 40, 10, true, true, {}});
+  for (double pinch : {0.0, 0.6, 0.95, 1.0, 1.05}) all.back().shapes.push_back(pinched_torus(pinch));
+  all.push_back({"helix tube", 60, 8, false, true, {}});
+  for (double pitch : {0.5, 0.3, 0.21, 0.2, 0.19}) all.back().shapes.push_back(helix_tube(pitch));
+  all.push_back({"spiral ramp", 36, 3, false, false, {}});
+  for (double pitch : {0.3, 0.1, 0.0}) all.back().shapes.push_back(spiral_ramp(pitch));
+  return all;
+}
+
+/// Every non-adjacent pair through the kernels directly (validation/brute_force.hpp).
+std::vector<std::pair<int, int>> brute_force_pairs(const sscc::SubspaceModel& model, const Eigen::VectorXd& q0,
+                                                   const Eigen::VectorXd& q1) {
+  const std::vector<Vector3d> x0 = model.deformed_positions(q0);
+  const std::vector<Vector3d> x1 = model.deformed_positions(q1);
+  const sscc::TriangleMesh& mesh = model.mesh();
+  std::vector<std::pair<int, int>> pairs;
+  for (int a = 0; a < mesh.triangle_count(); ++a) {
+    for (int b = a + 1; b < mesh.triangle_count(); ++b) {
+      if (mesh.adjacent(a, b)) continue;
+      if (sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]) <= 1.0) {
+        pairs.push_back({a, b});
+      }
+    }
+  }
+  return pairs;
+}
+
+std::vector<std::pair<int, int>> pairs_of(const sscc::SelfCcdReport& report) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& p : report.pairs) pairs.push_back({p.first, p.second});
+  return pairs;
+}
+
+}  // namespace
+
+TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive testing and brute force do",
+          "[patch_cull][query]") {
+  long culled = 0;
+  int colliding_steps = 0, steps = 0;
+  for (const Keyframes& c : cases()) {
+    std::vector<std::vector<Vector3d>> frames;
+    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+    const sscc::SubspaceModel model =
+        sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::SelfCcd ccd(bvh);
+    const int modes = model.mode_count();
+    // Consecutive keyframes, and the jumps from the first to each (larger folds in one step).
+    std::vector<std::pair<int, int>> transitions;
+    for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) transitions.push_back({k, k + 1});
+    for (int k = 2; k < static_cast<int>(frames.size()); ++k) transitions.push_back({0, k});
+    for (const auto& [from, to] : transitions) {
+      const Eigen::VectorXd q0 = sscc::test::keyframe_q(modes, from), q1 = sscc::test::keyframe_q(modes, to);
+      INFO(c.name << ": keyframe " << from << " to " << to);
+      sscc::SelfCcdOptions cones;
+      cones.use_normal_cones = true;
+      const sscc::SelfCcdReport with_cones = ccd.query(q0, q1, cones);
+      sscc::SelfCcdOptions plain;
+      plain.use_normal_cones = false;
+      const sscc::SelfCcdReport traditional = ccd.query(q0, q1, plain);
+      const sscc::SelfCcdReport exhaustive = ccd.query_exhaustive(q0, q1);
+      REQUIRE(with_cones.pairs == exhaustive.pairs);
+      REQUIRE(with_cones.features == exhaustive.features);
+      REQUIRE(traditional.pairs == exhaustive.pairs);
+      REQUIRE(pairs_of(with_cones) == brute_force_pairs(model, q0, q1));
+      CHECK(traditional.stats.cone_culled == 0);
+      culled += with_cones.stats.cone_culled;
+      colliding_steps += with_cones.collided();
+      ++steps;
+    }
+  }
+  CHECK(culled > 20);                  // the cones did cull
+  CHECK(colliding_steps >= steps / 3);  // and the steps do collide
+}
+
+TEST_CASE("normal cones: query_positions and any-hit mode agree with the unculled query", "[patch_cull][query]") {
+  std::vector<std::vector<Vector3d>> frames;
+  for (double degrees : {0.0, 120.0, 181.0}) {
+    frames.push_back(sscc::test::grid_positions(16, 5, false, false, folded_sheet(degrees * M_PI / 180)));
+  }
+  const sscc::SubspaceModel model = sscc::test::keyframe_model(sscc::test::grid_triangles(16, 5, false, false), frames);
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd ccd(bvh);
+  sscc::SelfCcdOptions plain;
+  plain.use_normal_cones = false;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::VectorXd q0 = sscc::test::keyframe_q(2, k), q1 = sscc::test::keyframe_q(2, k + 1);
+    const auto x0 = model.deformed_positions(q0), x1 = model.deformed_positions(q1);
+    sscc::SelfCcdOptions cones;
+    cones.use_normal_cones = true;
+    const sscc::SelfCcdReport culled = ccd.query_positions(x0, x1, cones);
+    CHECK(culled.pairs == ccd.query_positions(x0, x1, plain).pairs);
+    CHECK(culled.stats.cone_culled > 0);
+    sscc::SelfCcdOptions any;
+    any.mode = sscc::SelfCcdMode::kAnyHit;
+    any.use_normal_cones = true;
+    CHECK(ccd.query(q0, q1, any).collided() == ccd.query_exhaustive(q0, q1).collided());
+  }
+}
+
+TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour overlaps itself is not culled",
+          "[patch_cull]") {
+  const int nu = 36, nv = 3;
+  const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(nu, nv, false, false);
+  for (double pitch : {0.1, 0.0}) {
+    const std::vector<Vector3d> x = sscc::test::grid_positions(nu, nv, false, false, spiral_ramp(pitch));
+    const sscc::SubspaceModel model(sscc::TriangleMesh(x, triangles), Eigen::MatrixXd::Zero(3 * x.size(), 1),
+                                    Eigen::VectorXd::Ones(1));
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    REQUIRE(boundaries.simple_cycle(0));  // the ramp is one disc
+    // Every normal is within a cone about -z (the grid's orientation faces down).
+    for (const sscc::Triangle& t : triangles) {
+      const auto n = sscc::detail::bernstein_normals(x[t[0]], x[t[1]], x[t[2]], x[t[0]], x[t[1]], x[t[2]]);
+      REQUIRE(sscc::detail::certainly_positive(Vector3d(0, 0, -1), n));
+    }
+    sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
+    CHECK_FALSE(cull.cannot_self_touch(0));
+  }
+  // A short piece of the ramp (54 degrees) is a star-shaped disc in projection: culled.
+  const int short_nu = 6;
+  const Surface short_ramp = [](double u, double v) { return spiral_ramp(0.1)(u * 0.1, v); };
+  const std::vector<Vector3d> x = sscc::test::grid_positions(short_nu, nv, false, false, short_ramp);
+  const sscc::SubspaceModel model(sscc::TriangleMesh(x, sscc::test::grid_triangles(short_nu, nv, false, false)),
+                                  Eigen::MatrixXd::Zero(3 * x.size(), 1), Eigen::VectorXd::Ones(1));
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::detail::NodeBoundaries boundaries(bvh);
+  sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
+  CHECK(cull.cannot_self_touch(0));
+}
+
+TEST_CASE("normal cones: every node and node pair the cull accepts has no touching pair under brute force",
+          "[patch_cull]") {
+  int accepted_nodes = 0, accepted_pairs = 0;
+  std::vector<Keyframes> all = cases();
+  // A finer fold, for nodes large enough to be tested in pairs (kSmallestUnionPart).
+  all.push_back({"fine folding sheet", 64, 16, false, false, {}});
+  for (double degrees : {0.0, 60.0, 120.0, 179.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  for (const Keyframes& c : all) {
+    std::vector<std::vector<Vector3d>> frames;
+    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+    const sscc::SubspaceModel model =
+        sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const int modes = model.mode_count();
+    const auto& nodes = bvh.nodes();
+    for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) {
+      const auto x0 = model.deformed_positions(sscc::test::keyframe_q(modes, k));
+      const auto x1 = model.deformed_positions(sscc::test::keyframe_q(modes, k + 1));
+      sscc::detail::PatchCull cull(bvh, boundaries, x0, x1, [](int) {});
+      // No non-adjacent pair among the triangles at positions [begin, end) and [begin2, end2)
+      // (the same range twice for a node alone) touches during the step.
+      const auto no_contact = [&](int begin, int end, int begin2, int end2) {
+        for (int i = begin; i < end; ++i) {
+          for (int j = std::max(begin2, begin == begin2 ? i + 1 : begin2); j < end2; ++j) {
+            const int a = bvh.triangle_order()[i], b = bvh.triangle_order()[j];
+            if (mesh.adjacent(a, b)) continue;
+            if (sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]) <= 1.0) {
+              return false;
+            }
+          }
+        }
+        return true;
+      };
+      INFO(c.name << ": keyframe " << k << " to " << k + 1);
+      for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+        if (!cull.cannot_self_touch(n)) continue;
+        ++accepted_nodes;
+        REQUIRE(no_contact(nodes[n].triangle_begin, nodes[n].triangle_end, nodes[n].triangle_begin, nodes[n].triangle_end));
+      }
+      for (int a = 0; a < static_cast<int>(nodes.size()); ++a) {
+        for (int b = a + 1; b < static_cast<int>(nodes.size()); ++b) {
+          const bool disjoint = nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+          if (!disjoint || !cull.cannot_touch(a, b)) continue;
+          ++accepted_pairs;
+          // Pairs within each node are the node's own test; here the pairs across.
+          REQUIRE(no_contact(nodes[a].triangle_begin, nodes[a].triangle_end, nodes[b].triangle_begin, nodes[b].triangle_end));
+        }
+      }
+    }
+  }
+  CHECK(accepted_nodes > 10);
+  CHECK(accepted_pairs >= 3);  // parts of 32 to 64 triangles (patch_cull.hpp): few in these meshes
+}

@@ -1,0 +1,41 @@
+// The self-CCD table of `sscc bench`: on every mesh of ../shared/data/meshes, polynomial
+// modes, random trajectories at a few amplitudes, the traditional query (plain swept boxes),
+// the query with normal cones, and FCL's traversal, one thread each, on the same steps; time,
+// node tests and triangle-pair tests per step, and whether traditional and cones agree.
+// Step counts are small so that the table takes minutes (FCL is slow on the 75k bunny).
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace sscc::validation {
+
+struct SelfCcdTableOptions {
+  std::vector<std::string> meshes;  ///< mesh files
+  std::vector<double> amplitudes = {0.01, 0.05, 0.2};
+  int steps = 3;      ///< per mesh and amplitude, for traditional and cones
+  int fcl_steps = 2;  ///< the first steps of the same trajectory, for FCL
+  std::string basis = "polynomial:27";
+  std::uint64_t seed = 1;
+};
+
+struct SelfCcdTableRow {
+  std::string mesh;
+  int triangles = 0;
+  double amplitude = 0.0;
+  double traditional_ms = 0.0, cones_ms = 0.0, fcl_ms = 0.0;  ///< mean per step
+  double traditional_nodes = 0.0, cones_nodes = 0.0;          ///< node (box) tests per step
+  double traditional_pairs = 0.0, cones_pairs = 0.0;          ///< triangle-pair tests per step
+  int colliding_steps = 0;
+  bool identical = true;  ///< traditional and cones reported the same pairs on every step
+};
+
+/// Runs the table; progress goes to `progress`.
+std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& options, std::ostream& progress);
+
+/// The rows as a Markdown table (with the ratios).
+std::string self_ccd_table_markdown(const std::vector<SelfCcdTableRow>& rows);
+
+}  // namespace sscc::validation
