@@ -10,6 +10,7 @@
 #include "fcl_settle.hpp"
 #include "fcl_self_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
+#include "sscc/threads.hpp"
 #include "trajectory.hpp"
 
 namespace sscc::validation {
@@ -20,6 +21,8 @@ struct MethodRun {
   std::vector<PairList> pairs;           // per step
   std::vector<SelfCcdReport> reports;    // per step, sscc methods only
   std::vector<double> milliseconds;      // per step
+  std::vector<double> one_thread_ms;     // per step, sscc and traditional on one thread
+  int identical_one_thread = 0;          // steps whose one-thread report is the same
 };
 
 PairList pair_list(const SelfCcdReport& report) {
@@ -54,6 +57,9 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   const SelfCcd ccd = certificates ? SelfCcd(bvh, *certificates) : SelfCcd(bvh);
   SelfCcdOptions traditional;
   traditional.use_certificates = false;
+  const int threads = default_threads();
+  SelfCcdOptions sscc_one_thread, traditional_one_thread = traditional;
+  sscc_one_thread.threads = traditional_one_thread.threads = 1;
   const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed, o.burst);
   std::map<std::string, MethodRun> runs;
   long problems = 0;
@@ -76,6 +82,17 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       }
       run.milliseconds.push_back(
           1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      if (threads > 1 && (method == "sscc" || method == "traditional")) {  // the same step on one thread
+        const auto serial_start = std::chrono::steady_clock::now();
+        const SelfCcdReport serial =
+            ccd.query(q[k], q[k + 1], method == "sscc" ? sscc_one_thread : traditional_one_thread);
+        run.one_thread_ms.push_back(
+            1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - serial_start).count());
+        const bool same = serial.pairs == run.reports.back().pairs && serial.features == run.reports.back().features &&
+                          serial.earliest_toi == run.reports.back().earliest_toi;
+        run.identical_one_thread += same;
+        problems += !same;
+      }
     }
     long colliding = 0, pairs = 0;
     for (const PairList& p : run.pairs) colliding += !p.empty(), pairs += static_cast<long>(p.size());
@@ -91,6 +108,16 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       out << " certified_steps=" << certified;
     }
     out << '\n';
+    if (!run.one_thread_ms.empty()) {
+      double one = 0.0;
+      for (double ms : run.one_thread_ms) one += ms / o.steps;
+      std::snprintf(line, sizeof line,
+                    "%s threads: one_thread_mean_ms=%.3f threads=%d mean_ms=%.3f speedup=%.2f one_thread_median_ms=%.3f "
+                    "median_ms=%.3f identical_steps=%d/%d",
+                    method.c_str(), one, threads, mean, one / std::max(mean, 1e-9), median(run.one_thread_ms),
+                    median(run.milliseconds), run.identical_one_thread, o.steps);
+      out << line << '\n';
+    }
   }
   if (runs.count("sscc")) {
     // The cost of a step the root certificate decides, timed over many repeats of one.

@@ -11,11 +11,13 @@
 #include <exception>
 #include <vector>
 
+#include "sscc/threads.hpp"
+
 namespace sscc::detail {
 
-/// The thread count a query or step uses: `requested` when positive, otherwise every thread
-/// OpenMP may use (omp_get_max_threads: the cores, or OMP_NUM_THREADS when set).
-inline int resolve_threads(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
+/// The thread count a query or step uses: `requested` when positive, otherwise the
+/// library's default (sscc/threads.hpp).
+inline int resolve_threads(int requested) { return requested > 0 ? requested : default_threads(); }
 
 /// For the modes that stop at the first hit: the lowest index of a task that hit so far.
 /// The serial answer is the first hit in task order, so tasks after that one are cancelled

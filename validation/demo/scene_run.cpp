@@ -11,6 +11,7 @@
 #include "demo/spring_scene.hpp"
 #include "fcl_self_ccd.hpp"
 #include "sscc/scene/scene.hpp"
+#include "sscc/threads.hpp"
 
 namespace sscc::validation {
 
@@ -86,8 +87,12 @@ double SceneRun::speedup() const { return traditional.mean() / std::max(sscc.mea
 double SceneRun::discrete_speedup() const {
   return discrete_traditional.mean() / std::max(discrete_sscc.mean(), 1e-9);
 }
+double SceneRun::thread_speedup(const MethodTimes& one_thread, const MethodTimes& all) const {
+  return one_thread.ms.empty() ? 0.0 : one_thread.mean() / std::max(all.mean(), 1e-9);
+}
 bool SceneRun::agree() const {
   return identical_steps == steps && fcl_settled.unexplained == 0 &&
+         (sscc_one_thread.ms.empty() || identical_thread_steps == steps) &&
          (discrete_sscc.ms.empty() || identical_discrete_steps == steps);
 }
 
@@ -140,6 +145,9 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
 
   SceneOptions with, without;
   without.use_certificates = false;
+  run.threads = default_threads();
+  SceneOptions with_one_thread = with, without_one_thread = without;
+  with_one_thread.threads = without_one_thread.threads = 1;
   SelfCcdOptions discrete_with, discrete_without;
   discrete_without.use_certificates = false;
   std::vector<std::vector<ObjectStep>> sampled;  // the steps FCL sees
@@ -164,6 +172,15 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     const SceneReport slow = scene.step(steps, without);
     add_run(run.traditional, slow, milliseconds_since(t));
     run.identical_steps += same_reports(fast, slow);
+    if (run.threads > 1) {  // the same step on one thread, side by side
+      t = std::chrono::steady_clock::now();
+      const SceneReport fast_one = scene.step(steps, with_one_thread);
+      add_run(run.sscc_one_thread, fast_one, milliseconds_since(t));
+      t = std::chrono::steady_clock::now();
+      const SceneReport slow_one = scene.step(steps, without_one_thread);
+      add_run(run.traditional_one_thread, slow_one, milliseconds_since(t));
+      run.identical_thread_steps += same_reports(fast_one, fast) && same_reports(slow_one, slow);
+    }
     run.object_steps_certified += fast.stats.objects_certified;
     run.object_steps_traversed += fast.stats.objects_traversed;
     run.all_certified_steps += fast.stats.objects_traversed == 0;
