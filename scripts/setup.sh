@@ -2,7 +2,7 @@
 # Installs the Debian packages sscc builds with, where they are missing (root or sudo).
 set -euo pipefail
 
-packages=(build-essential cmake libeigen3-dev libgmp-dev catch2 libfcl-dev libccd-dev gnuplot-nox libspectra-dev libtet1.5-dev libopenmesh-dev)
+packages=(build-essential cmake libeigen3-dev libgmp-dev catch2 libfcl-dev libccd-dev gnuplot-nox libspectra-dev libtet1.5-dev libopenmesh-dev clang libomp-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

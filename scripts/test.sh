@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: the Release build in build/, then the same tests
-# under AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/.
+# under AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/, then the tests of
+# what runs on several threads under ThreadSanitizer in build-tsan/ (scripts/tsan.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -10,3 +11,4 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSCC_SANITIZE=O
   -DSSCC_BUILD_VALIDATION=OFF
 cmake --build build-sanitize -j "$(nproc)"
 (cd build-sanitize && ctest --output-on-failure -j "$(nproc)")
+bash scripts/tsan.sh
