@@ -112,9 +112,10 @@ TEST_CASE("parallel self-CCD: with certificates, steps around the root radius", 
   CHECK(root_certified == 3);  // the steps at half the root radius, on four threads too
   CHECK(check_steps(ccd, steps) >= 1);
   // The traditional query on the same steps.
-  for (const auto& [q0, q1] : steps) {
+  for (const auto& step : steps) {
     const auto off = [&](int threads) {
-      return ccd.query(q0, q1, with(sscc::SelfCcdMode::kAllContacts, sscc::NodeBounds::kHybrid, threads, false));
+      return ccd.query(step.first, step.second,
+                       with(sscc::SelfCcdMode::kAllContacts, sscc::NodeBounds::kHybrid, threads, false));
     };
     require_same_report(off(2), off(1));
   }
