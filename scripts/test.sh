@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: the Release build in build/, then the same tests
 # under AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ (without the
-# Python module: an instrumented extension would need the sanitizer runtime preloaded).
-# Warnings are errors in the Release build (the sanitizer build only reports them: GCC's
-# instrumented -O2 code gives spurious maybe-uninitialized and stringop warnings).
+# Python module: an instrumented extension would need the sanitizer runtime preloaded), then
+# the tests of what runs on several threads under ThreadSanitizer in build-tsan/
+# (scripts/tsan.sh). Warnings are errors in the Release build (the sanitizer build only
+# reports them: GCC's instrumented -O2 code gives spurious maybe-uninitialized and stringop
+# warnings).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -13,3 +15,4 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSCC_SANITIZE=O
   -DSSCC_BUILD_VALIDATION=OFF -DSSCC_BUILD_PYTHON=OFF
 cmake --build build-sanitize -j "$(nproc)"
 (cd build-sanitize && ctest --output-on-failure -j "$(nproc)")
+bash scripts/tsan.sh

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include "fcl_self_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "statistics.hpp"
+#include "sscc/threads.hpp"
 #include "trajectory.hpp"
 
 namespace sscc::validation {
@@ -21,12 +23,23 @@ struct MethodRun {
   std::vector<PairList> pairs;           // per step
   std::vector<SelfCcdReport> reports;    // per step, sscc methods only
   std::vector<double> milliseconds;      // per step
+  std::vector<double> one_thread_ms;     // per step, sscc and traditional on one thread
+  double cpu_ms = 0.0, one_thread_cpu_ms = 0.0;  // process CPU time over all steps, each thread count
+  int identical_one_thread = 0;          // steps whose one-thread report is the same
 };
 
 PairList pair_list(const SelfCcdReport& report) {
   PairList pairs;
   for (const auto& p : report.pairs) pairs.emplace_back(p.first, p.second);
   return pairs;
+}
+
+/// CPU time of the whole process (every thread), in ms: with wall-clock time, how much of the
+/// machine a run had.
+double process_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
 }  // namespace
@@ -55,6 +68,9 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   SelfCcdOptions cones;
   cones.use_certificates = false;
   cones.use_normal_cones = true;
+  const int threads = default_threads();
+  SelfCcdOptions sscc_one_thread, traditional_one_thread = traditional;
+  sscc_one_thread.threads = traditional_one_thread.threads = 1;
   const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed, o.burst);
   std::map<std::string, MethodRun> runs;
   long problems = 0;
@@ -65,6 +81,7 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
     if (method == "fcl") fcl = std::make_unique<FclSelfCcd>(model.mesh());
     for (int k = 0; k < o.steps; ++k) {
       const auto start = std::chrono::steady_clock::now();
+      const double cpu_start = process_cpu_ms();
       if (method == "sscc" || method == "cones" || method == "traditional" || method == "exhaustive") {
         run.reports.push_back(method == "sscc"          ? ccd.query(q[k], q[k + 1])
                               : method == "cones"       ? ccd.query(q[k], q[k + 1], cones)
@@ -78,6 +95,20 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       }
       run.milliseconds.push_back(
           1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      run.cpu_ms += process_cpu_ms() - cpu_start;
+      if (threads > 1 && (method == "sscc" || method == "traditional")) {  // the same step on one thread
+        const auto serial_start = std::chrono::steady_clock::now();
+        const double serial_cpu_start = process_cpu_ms();
+        const SelfCcdReport serial =
+            ccd.query(q[k], q[k + 1], method == "sscc" ? sscc_one_thread : traditional_one_thread);
+        run.one_thread_ms.push_back(
+            1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - serial_start).count());
+        run.one_thread_cpu_ms += process_cpu_ms() - serial_cpu_start;
+        const bool same = serial.pairs == run.reports.back().pairs && serial.features == run.reports.back().features &&
+                          serial.earliest_toi == run.reports.back().earliest_toi;
+        run.identical_one_thread += same;
+        problems += !same;
+      }
     }
     long colliding = 0, pairs = 0;
     for (const PairList& p : run.pairs) colliding += !p.empty(), pairs += static_cast<long>(p.size());
@@ -104,6 +135,17 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       out << line;
     }
     out << '\n';
+    if (!run.one_thread_ms.empty()) {
+      double one = 0.0;
+      for (double ms : run.one_thread_ms) one += ms / o.steps;
+      std::snprintf(line, sizeof line,
+                    "%s threads: one_thread_mean_ms=%.3f threads=%d mean_ms=%.3f speedup=%.2f one_thread_median_ms=%.3f "
+                    "median_ms=%.3f identical_steps=%d/%d one_thread_cpu_ms=%.3f cpu_ms=%.3f",
+                    method.c_str(), one, threads, mean, one / std::max(mean, 1e-9), median(run.one_thread_ms),
+                    median(run.milliseconds), run.identical_one_thread, o.steps, run.one_thread_cpu_ms / o.steps,
+                    run.cpu_ms / o.steps);
+      out << line << '\n';
+    }
   }
   // Time ratios of each method against the slower ones on the same steps (sscc against
   // traditional has its own lines below).

@@ -23,3 +23,4 @@
 #include "sscc/query/pose_step_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "sscc/scene/scene.hpp"
+#include "sscc/threads.hpp"

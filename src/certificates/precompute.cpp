@@ -1,5 +1,3 @@
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -8,6 +6,7 @@
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/certificates/triangle_pair_bound.hpp"
+#include "sscc/threads.hpp"
 
 namespace sscc {
 
@@ -256,7 +255,7 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
       }
     }
     std::stable_sort(tasks.begin(), tasks.end(), [](const Task& x, const Task& y) { return x.size > y.size; });
-#pragma omp parallel
+#pragma omp parallel num_threads(default_threads())
     {
       Counters counters;
 #pragma omp for schedule(dynamic, 1)
@@ -299,7 +298,7 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
   stats.triangle_pairs_culled = totals.triangle_pairs_culled;
   stats.triangle_pairs_bounded = totals.triangle_pairs_bounded;
   stats.constant_mode_evaluations = totals.evaluations;
-  stats.threads = omp_get_max_threads();
+  stats.threads = default_threads();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return certificates;
 }

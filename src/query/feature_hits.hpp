@@ -14,31 +14,39 @@
 
 namespace sscc::detail {
 
-/// The feature hits of one query, its kernel-call count and whether it has stopped (any-hit
+/// The feature hits of one query (or one task of it) and whether it has stopped (any-hit
 /// mode stops at the first hit). Feature is FeatureContact or InterObjectFeature: a
 /// struct with a `toi` member.
 template <typename Feature>
 class FeatureHits {
  public:
-  explicit FeatureHits(SelfCcdMode mode) : stop_at_first_(mode == SelfCcdMode::kAnyHit) {}
+  /// Kernel calls are counted in *kernel_calls (the caller's statistics).
+  FeatureHits(SelfCcdMode mode, long* kernel_calls)
+      : stop_at_first_(mode == SelfCcdMode::kAnyHit), kernel_calls_(kernel_calls) {}
 
   /// Counts the kernel call; records `feature` at the kernel's time of impact if it hit.
   void record(const ccd::CcdResult& result, Feature feature) {
-    ++kernel_calls_;
+    ++*kernel_calls_;
     if (!result.hit) return;
     feature.toi = result.toi;
     hits_.push_back(feature);
     if (stop_at_first_) stopped_ = true;
   }
   bool stopped() const { return stopped_; }
-  long kernel_calls() const { return kernel_calls_; }
   const std::vector<Feature>& hits() const { return hits_; }
   std::vector<Feature>& hits() { return hits_; }
+  /// Hands the hits over and starts afresh (not stopped): one task of a parallel query.
+  std::vector<Feature> take() {
+    stopped_ = false;
+    return std::exchange(hits_, {});
+  }
+  /// The hits of a whole query, merged from its tasks.
+  void replace(std::vector<Feature> hits) { hits_ = std::move(hits); }
 
  private:
   bool stop_at_first_;
   bool stopped_ = false;
-  long kernel_calls_ = 0;
+  long* kernel_calls_;
   std::vector<Feature> hits_;
 };
 

@@ -9,13 +9,16 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "common/finite.hpp"
+#include "common/parallel_tasks.hpp"
 #include "query/contour.hpp"
 #include "query/descent.hpp"
 #include "query/feature_hits.hpp"
 #include "query/patch_cull.hpp"
 #include "query/sweep.hpp"
+#include "query/task_frontier.hpp"
 #include "sscc/ccd/kernels.hpp"
 
 namespace sscc {
@@ -74,7 +77,7 @@ class StepContext {
         subspace_boxes_(bvh.nodes().size()),
         node_sweeps_(bvh.nodes().size()),
         triangle_sweeps_(mesh_.triangle_count()),
-        hits_(options.mode) {
+        hits_(options.mode, &stats_.kernel_calls) {
     if (boundaries && options.use_normal_cones && separation_ == 0.0) {
       patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, [this](int i) {
         for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
@@ -103,11 +106,25 @@ class StepContext {
     }
     return sweeps_may_touch(node_sweep(a), node_sweep(b), separation_);
   }
-  bool stopped() const { return hits_.stopped(); }
+  bool stopped() const { return hits_.stopped() || (cancel_ && cancel_->cancels(task_)); }
   SelfCcdStats& stats() { return stats_; }
   /// The normal-cone cull (patch_cull.hpp) of a node, and of the union of two nodes.
   bool node_cannot_self_touch(int n) { return patch_cull_ && patch_cull_->cannot_self_touch(n); }
   bool nodes_cannot_touch(int a, int b) { return patch_cull_ && patch_cull_->cannot_touch(a, b); }
+
+  /// The parallel layer: the next task this context runs (its hits are taken with
+  /// take_hits before the next one); `cancel`, in the modes that stop at a hit, tells when
+  /// an earlier task's hit makes this one useless.
+  void begin_task(int task, const detail::FirstHitTask* cancel) {
+    task_ = task;
+    cancel_ = cancel;
+  }
+  std::vector<FeatureContact> take_hits() { return hits_.take(); }
+  /// The merged hits of every task, in task order, and the counters of every context.
+  void absorb(std::vector<FeatureContact> hits, const SelfCcdStats& stats) {
+    hits_.replace(std::move(hits));
+    stats_ = stats;
+  }
 
   /// Whether the triangle at position i of the BVH's order can touch anything in node n:
   /// the cheap test that prunes a leaf pair's triangle loops.
@@ -157,7 +174,6 @@ class StepContext {
       hits.erase(std::remove_if(hits.begin(), hits.end(), [&](const FeatureContact& c) { return c.toi != earliest; }),
                  hits.end());
     }
-    stats_.kernel_calls = hits_.kernel_calls();
     std::vector<TrianglePairContact> pairs = pairs_from_features();  // before the move below
     return sorted_report(std::move(pairs), std::move(hits), stats_, start);
   }
@@ -274,6 +290,8 @@ class StepContext {
   FeatureHits<FeatureContact> hits_;
   SelfCcdStats stats_;
   std::unique_ptr<detail::PatchCull> patch_cull_;  // null: no normal-cone cull
+  const detail::FirstHitTask* cancel_ = nullptr;
+  int task_ = 0;
 };
 
 /// Self-traversal (SSCC paper, Algorithm 1): intra(n) tests the node against itself,
@@ -283,9 +301,13 @@ class StepContext {
 template <typename Context>
 class Traversal {
  public:
-  /// certificates may be null (the traditional traversal).
-  Traversal(const SubspaceBvh& bvh, Context& context, const Certificates* certificates, double s)
-      : bvh_(bvh), context_(context), certificates_(certificates), s_(s) {}
+  /// certificates may be null (the traditional traversal); with a frontier, node pairs it
+  /// takes become tasks instead of being descended (task_frontier.hpp).
+  Traversal(const SubspaceBvh& bvh, Context& context, const Certificates* certificates, double s,
+            detail::TaskFrontier* frontier = nullptr)
+      : bvh_(bvh), context_(context), certificates_(certificates), s_(s), frontier_(frontier) {}
+
+  void run(const detail::TraversalTask& task) { task.a == task.b ? intra(task.a) : inter(task.a, task.b); }
 
   void intra(int n) {
     if (context_.stopped()) return;
@@ -293,6 +315,7 @@ class Traversal {
       ++context_.stats().certified;
       return;
     }
+    if (frontier_ && frontier_->take(n, n)) return;
     if (context_.node_cannot_self_touch(n)) {
       ++context_.stats().cone_culled;
       return;
@@ -317,6 +340,7 @@ class Traversal {
       ++context_.stats().certified;
       return;
     }
+    if (frontier_ && frontier_->take(a, b)) return;
     if (!context_.nodes_overlap(a, b)) return;
     if (context_.nodes_cannot_touch(a, b)) {
       ++context_.stats().cone_culled;
@@ -340,7 +364,48 @@ class Traversal {
   Context& context_;
   const Certificates* certificates_;
   double s_;
+  detail::TaskFrontier* frontier_;
 };
+
+/// The traversal from the root on `threads` > 1 threads: the top expanded into tasks
+/// (task_frontier.hpp), the tasks run on one context per thread (make_context() makes
+/// one; the expansion's own is reused by the first thread), their hits merged in task
+/// order; in the any-hit mode only the first task's that hit. The counters are summed over
+/// the contexts: vertices and boxes computed by several threads count once per thread.
+template <typename MakeContext>
+SelfCcdReport parallel_traversal(const SubspaceBvh& bvh, const Certificates* certificates, double s,
+                                 const SelfCcdOptions& options, int threads, MakeContext make_context,
+                                 std::chrono::steady_clock::time_point start) {
+  std::vector<std::unique_ptr<StepContext>> contexts(threads);
+  contexts[0] = make_context();
+  detail::TaskFrontier frontier(bvh, threads);
+  Traversal<StepContext>(bvh, *contexts[0], certificates, s, &frontier).intra(0);
+  const std::vector<detail::TraversalTask>& tasks = frontier.tasks();
+  const int count = static_cast<int>(tasks.size());
+  const bool any_hit = options.mode == SelfCcdMode::kAnyHit;
+  std::vector<std::vector<FeatureContact>> hits(count);
+  detail::FirstHitTask first_hit;
+  detail::run_tasks(count, std::max(1, std::min(threads, count)), [&](int task, int thread) {
+    if (any_hit && first_hit.cancels(task)) return;
+    if (!contexts[thread]) contexts[thread] = make_context();
+    StepContext& context = *contexts[thread];
+    context.begin_task(task, any_hit ? &first_hit : nullptr);
+    Traversal<StepContext>(bvh, context, certificates, s).run(tasks[task]);
+    hits[task] = context.take_hits();
+    if (any_hit && !hits[task].empty()) first_hit.hit(task);
+  });
+  std::vector<FeatureContact> merged;
+  for (std::vector<FeatureContact>& h : hits) {
+    merged.insert(merged.end(), h.begin(), h.end());
+    if (any_hit && !merged.empty()) break;
+  }
+  SelfCcdStats stats;
+  for (const auto& context : contexts) {
+    if (context) detail::add_counts(stats, context->stats());
+  }
+  contexts[0]->absorb(std::move(merged), stats);
+  return contexts[0]->finish(start);
+}
 
 /// Discrete variant: boxes at one configuration, exact triangle-triangle tests.
 class DiscreteContext {
@@ -448,9 +513,25 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   const double s = std::max(q_hat0.stableNorm(), q_hat1.stableNorm());
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
+  const int threads = detail::resolve_threads(options.threads);
+  if (threads > 1) {
+    const auto make_context = [&] {
+      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get());
+    };
+    return parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
+  }
   StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get());
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
+}
+
+bool SelfCcd::root_certifies(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
+                             const SelfCcdOptions& options) const {
+  const Certificates* certificates = usable(certificates_.get(), options);
+  if (!certificates) return false;
+  const SubspaceModel& model = bvh_->model();
+  const double s = std::max(model.scaled_coordinates(q0).stableNorm(), model.scaled_coordinates(q1).stableNorm());
+  return s < certificates->node_radius(0);
 }
 
 SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
@@ -471,6 +552,11 @@ SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, c
   }
   SelfCcdOptions refit = options;
   refit.bounds = NodeBounds::kRefit;
+  const int threads = detail::resolve_threads(options.threads);
+  if (threads > 1) {
+    const auto make_context = [&] { return std::make_unique<StepContext>(*bvh_, x0, x1, refit, boundaries_.get()); };
+    return parallel_traversal(*bvh_, nullptr, 0.0, refit, threads, make_context, start);
+  }
   StepContext context(*bvh_, x0, x1, refit, boundaries_.get());
   Traversal<StepContext>(*bvh_, context, nullptr, 0.0).intra(0);
   return context.finish(start);

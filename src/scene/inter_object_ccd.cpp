@@ -26,7 +26,7 @@ Aabb swept_box(const Sweep& s) { return hull(s.start, s.end); }
 
 InterObjectCcd::InterObjectCcd(ObjectMotion& a, int object_a, ObjectMotion& b, int object_b,
                                const SceneOptions& options)
-    : a_(a), b_(b), object_a_(object_a), object_b_(object_b), options_(options), hits_(options.mode) {}
+    : a_(a), b_(b), object_a_(object_a), object_b_(object_b), options_(options), hits_(options.mode, &kernel_calls_) {}
 
 bool InterObjectCcd::roots_meet() {
   ++box_tests_;

@@ -31,7 +31,7 @@ class InterObjectCcd {
   std::vector<InterObjectContact> contacts() const;
   long box_tests() const { return box_tests_; }
   long triangle_pairs() const { return triangle_pairs_; }
-  long kernel_calls() const { return hits_.kernel_calls(); }
+  long kernel_calls() const { return kernel_calls_; }
 
  private:
   /// Every cull is widened by the kernels' minimum separation.
@@ -45,8 +45,8 @@ class InterObjectCcd {
   ObjectMotion& b_;
   int object_a_, object_b_;
   const SceneOptions& options_;
+  long box_tests_ = 0, triangle_pairs_ = 0, kernel_calls_ = 0;
   FeatureHits<InterObjectFeature> hits_;
-  long box_tests_ = 0, triangle_pairs_ = 0;
 };
 
 }  // namespace sscc::detail

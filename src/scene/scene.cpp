@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "common/finite.hpp"
+#include "common/parallel_tasks.hpp"
 #include "scene/inter_object_ccd.hpp"
 #include "sscc/common/timing.hpp"
 
@@ -124,60 +125,153 @@ class Motions {
 
 }  // namespace
 
+namespace {
+
+/// What one object pair's traversal found.
+struct PairOutcome {
+  std::vector<InterObjectFeature> features;
+  std::vector<InterObjectContact> contacts;
+  long box_tests = 0, triangle_pairs = 0, kernel_calls = 0;
+  bool stopped = false;
+};
+
+/// An object pair whose root sweeps meet (object_b >= 0), or an object whose self test
+/// needs a traversal (object_b < 0): the tasks of a step, in the serial order.
+struct SceneTask {
+  int object_a, object_b;
+};
+
+}  // namespace
+
 SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
   std::vector<const SelfCcd*> detectors;
   for (const Object& o : objects_) detectors.push_back(&o.detector);
   Motions motions(detectors, steps);
-  SceneReport report;
-  report.objects.resize(objects_.size());
-  bool stop = false;
+  const int n = object_count();
+  SelfCcdOptions self_options = options;
+  self_options.threads = 1;
+  const bool any_hit = options.mode == SelfCcdMode::kAnyHit;
+
+  // Decided before any thread starts: switched-off, static and root-certified objects,
+  // object pairs whose root sweeps do not meet. The rest become tasks in the serial order.
+  std::vector<ObjectSelfResult> self(n);
+  std::vector<SceneTask> tasks;
   const auto self_start = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < objects_.size() && !stop; ++i) {
-    ObjectSelfResult& result = report.objects[i];
-    const bool moved = !is_static(steps[i]);
+  for (int i = 0; i < n; ++i) {
     if (!objects_[i].options.self_collision) {
-      result.outcome = SelfTestOutcome::kSwitchedOff;
-    } else if (!moved) {  // nothing can come into contact
-      result.outcome = SelfTestOutcome::kStatic;
-      ++report.stats.objects_static;
+      self[i].outcome = SelfTestOutcome::kSwitchedOff;
+    } else if (is_static(steps[i])) {  // nothing can come into contact
+      self[i].outcome = SelfTestOutcome::kStatic;
+    } else if (objects_[i].detector.root_certifies(steps[i].q0, steps[i].q1, self_options)) {
+      self[i].report = objects_[i].detector.query(steps[i].q0, steps[i].q1, self_options);
+      self[i].outcome = SelfTestOutcome::kCertified;
     } else {
-      result.report = objects_[i].detector.query(steps[i].q0, steps[i].q1, options);
-      const bool certified = result.report.stats.root_certified;
-      result.outcome = certified ? SelfTestOutcome::kCertified : SelfTestOutcome::kTraversed;
-      ++(certified ? report.stats.objects_certified : report.stats.objects_traversed);
-      stop = options.mode == SelfCcdMode::kAnyHit && result.report.collided();
+      tasks.push_back({i, -1});
     }
   }
-  report.stats.self_seconds = seconds_since(self_start);
+  double self_seconds = seconds_since(self_start);
+  struct PairEntry {
+    int a, b;
+    bool culled;
+    long box_tests;
+  };
+  std::vector<PairEntry> pairs;
   const auto inter_start = std::chrono::steady_clock::now();
-  for (int a = 0; a < object_count() && !stop; ++a) {
+  for (int a = 0; a < n; ++a) {
     if (!objects_[a].options.inter_object) continue;
-    for (int b = a + 1; b < object_count() && !stop; ++b) {
+    for (int b = a + 1; b < n; ++b) {
       if (!objects_[b].options.inter_object) continue;
-      ++report.stats.object_pairs;
       if (is_static(steps[a]) && is_static(steps[b])) {
-        ++report.stats.object_pairs_culled;
+        pairs.push_back({a, b, true, 0});
         continue;
       }
       detail::InterObjectCcd pair(motions[a], a, motions[b], b, options);
-      if (!pair.roots_meet()) {
-        ++report.stats.object_pairs_culled;
-        report.stats.inter_box_tests += pair.box_tests();
-        continue;
-      }
-      pair.run();
-      report.stats.inter_box_tests += pair.box_tests();
-      report.stats.inter_triangle_pairs += pair.triangle_pairs();
-      report.stats.inter_kernel_calls += pair.kernel_calls();
-      report.features.insert(report.features.end(), pair.features().begin(), pair.features().end());
-      const std::vector<InterObjectContact> contacts = pair.contacts();
-      report.contacts.insert(report.contacts.end(), contacts.begin(), contacts.end());
-      stop = pair.stopped();
+      const bool meet = pair.roots_meet();
+      pairs.push_back({a, b, !meet, pair.box_tests()});
+      if (meet) tasks.push_back({a, b});
     }
   }
+  double inter_seconds = seconds_since(inter_start);
+
+  // The tasks: one object's self test alone gets every thread; otherwise the tasks share
+  // them, each on one thread, with the objects' motions per thread (they cache as they go).
+  const int threads = std::max(1, std::min(detail::resolve_threads(options.threads), static_cast<int>(tasks.size())));
+  std::vector<PairOutcome> outcomes(tasks.size());
+  std::vector<double> task_seconds(tasks.size(), 0.0);
+  std::vector<std::unique_ptr<Motions>> thread_motions(threads);
+  detail::FirstHitTask first_hit;
+  const auto run = [&](int k, int thread, int query_threads) {
+    if (any_hit && first_hit.cancels(k)) return;
+    const auto task_start = std::chrono::steady_clock::now();
+    const SceneTask& task = tasks[k];
+    bool hit = false;
+    if (task.object_b < 0) {
+      ObjectSelfResult& result = self[task.object_a];
+      SelfCcdOptions traversal = self_options;
+      traversal.threads = query_threads;
+      result.report = objects_[task.object_a].detector.query(steps[task.object_a].q0, steps[task.object_a].q1, traversal);
+      result.outcome = result.report.stats.root_certified ? SelfTestOutcome::kCertified : SelfTestOutcome::kTraversed;
+      hit = result.report.collided();
+    } else {
+      if (!thread_motions[thread]) thread_motions[thread] = std::make_unique<Motions>(detectors, steps);
+      Motions& m = *thread_motions[thread];
+      detail::InterObjectCcd pair(m[task.object_a], task.object_a, m[task.object_b], task.object_b, options);
+      pair.run();
+      PairOutcome& outcome = outcomes[k];
+      outcome.features = pair.features();
+      outcome.contacts = pair.contacts();
+      outcome.box_tests = pair.box_tests();
+      outcome.triangle_pairs = pair.triangle_pairs();
+      outcome.kernel_calls = pair.kernel_calls();
+      outcome.stopped = pair.stopped();
+      hit = outcome.stopped;
+    }
+    task_seconds[k] = seconds_since(task_start);
+    if (any_hit && hit) first_hit.hit(k);
+  };
+  if (tasks.size() == 1 && tasks[0].object_b < 0) {
+    run(0, 0, detail::resolve_threads(options.threads));
+  } else {
+    detail::run_tasks(static_cast<int>(tasks.size()), threads, [&](int k, int thread) { run(k, thread, 1); });
+  }
+
+  // Merged in the serial order: self tests, then object pairs, up to the first hit in the
+  // any-hit mode (what comes after it is left out, as the serial step never reaches it).
+  SceneReport report;
+  report.objects.resize(n);
+  bool stop = false;
+  for (int i = 0; i < n && !stop; ++i) {
+    report.objects[i] = std::move(self[i]);
+    const SelfTestOutcome outcome = report.objects[i].outcome;
+    report.stats.objects_static += outcome == SelfTestOutcome::kStatic;
+    report.stats.objects_certified += outcome == SelfTestOutcome::kCertified;
+    report.stats.objects_traversed += outcome == SelfTestOutcome::kTraversed;
+    stop = any_hit && report.objects[i].report.collided();
+  }
+  std::size_t k = 0;
+  while (k < tasks.size() && tasks[k].object_b < 0) self_seconds += task_seconds[k++];
+  for (const PairEntry& entry : pairs) {
+    if (stop) break;
+    ++report.stats.object_pairs;
+    report.stats.inter_box_tests += entry.box_tests;
+    if (entry.culled) {
+      ++report.stats.object_pairs_culled;
+      continue;
+    }
+    inter_seconds += task_seconds[k];
+    const PairOutcome& outcome = outcomes[k++];
+    report.stats.inter_box_tests += outcome.box_tests;
+    report.stats.inter_triangle_pairs += outcome.triangle_pairs;
+    report.stats.inter_kernel_calls += outcome.kernel_calls;
+    report.features.insert(report.features.end(), outcome.features.begin(), outcome.features.end());
+    report.contacts.insert(report.contacts.end(), outcome.contacts.begin(), outcome.contacts.end());
+    stop = outcome.stopped;
+  }
   report.stats.inter_vertices_computed = motions.vertices_computed();
-  report.stats.inter_seconds = seconds_since(inter_start);
+  for (const auto& m : thread_motions) report.stats.inter_vertices_computed += m ? m->vertices_computed() : 0;
+  report.stats.self_seconds = self_seconds;
+  report.stats.inter_seconds = inter_seconds;
   sort_inter(report);
   report.earliest_toi = earliest_toi(report);
   if (options.mode == SelfCcdMode::kEarliest) keep_earliest(report);

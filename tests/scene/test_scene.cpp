@@ -246,3 +246,80 @@ TEST_CASE("scene: a minimum separation widens the inter-object culls", "[scene]"
   thick.kernel.minimum_separation = 0.4;
   CHECK(scene.step(steps, thick).contacts.empty());
 }
+
+namespace {
+
+void require_same_scene_report(const sscc::SceneReport& parallel, const sscc::SceneReport& serial) {
+  REQUIRE(parallel.objects.size() == serial.objects.size());
+  for (std::size_t i = 0; i < serial.objects.size(); ++i) {
+    INFO("object " << i);
+    REQUIRE(parallel.objects[i].outcome == serial.objects[i].outcome);
+    REQUIRE(parallel.objects[i].report.pairs == serial.objects[i].report.pairs);
+    REQUIRE(parallel.objects[i].report.features == serial.objects[i].report.features);
+    REQUIRE(parallel.objects[i].report.earliest_toi == serial.objects[i].report.earliest_toi);
+  }
+  REQUIRE(parallel.contacts == serial.contacts);
+  REQUIRE(parallel.features == serial.features);
+  REQUIRE(parallel.earliest_toi == serial.earliest_toi);
+  REQUIRE(parallel.stats.objects_static == serial.stats.objects_static);
+  REQUIRE(parallel.stats.objects_certified == serial.stats.objects_certified);
+  REQUIRE(parallel.stats.objects_traversed == serial.stats.objects_traversed);
+  REQUIRE(parallel.stats.object_pairs == serial.stats.object_pairs);
+  REQUIRE(parallel.stats.object_pairs_culled == serial.stats.object_pairs_culled);
+}
+
+}  // namespace
+
+TEST_CASE("scene: reports equal on every thread count, in every mode, with certificates and without",
+          "[scene][parallel]") {
+  const Fixture f;
+  const sscc::Certificates certificates = sscc::Certificates::precompute(f.bvh);
+  const sscc::SelfCcd certified(f.bvh, certificates);
+  // Three objects as in the other tests plus a still one and a certified one beside them.
+  sscc::Scene scene;
+  for (int i = 0; i < 3; ++i) scene.add_object(i == 1 ? certified : f.ccd);
+  scene.add_object(f.ccd);
+  scene.add_object(certified);
+  std::mt19937_64 rng(17);
+  int colliding = 0;
+  int one_traversal = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    std::vector<sscc::ObjectStep> steps = random_steps(rng, 0.3, trial % 2 ? 0.6 : 0.2);
+    steps.push_back(steps[0]);  // still, apart from the others
+    steps[3].q1 = steps[3].q0;
+    steps[3].frame1 = steps[3].frame0;
+    steps[3].frame0.translation = steps[3].frame1.translation = Eigen::Vector3d(-8, 0, 0);
+    steps.push_back(steps[0]);  // well inside its root certificate
+    steps[4].q0 = Eigen::VectorXd::Constant(kModes, 0.1 * certificates.node_radius(0) / 3.0);
+    steps[4].q1 = -steps[4].q0;
+    steps[4].frame0.translation = steps[4].frame1.translation = Eigen::Vector3d(8, 0, 0);
+    if (trial >= 6) {  // one object alone needs a traversal: it gets every thread
+      for (int i : {0, 2}) steps[i].q1 = steps[i].q0, steps[i].frame1 = steps[i].frame0;
+      steps[1].q0 = 3.0 * steps[1].q0;
+    }
+    for (sscc::SelfCcdMode mode : {sscc::SelfCcdMode::kAllContacts, sscc::SelfCcdMode::kEarliest,
+                                   sscc::SelfCcdMode::kAnyHit}) {
+      for (bool use_certificates : {true, false}) {
+        sscc::SceneOptions options;
+        options.mode = mode;
+        options.use_certificates = use_certificates;
+        options.threads = 1;
+        const sscc::SceneReport serial = scene.step(steps, options);
+        if (mode == sscc::SelfCcdMode::kAllContacts && use_certificates) {
+          colliding += serial.collided();
+          one_traversal += serial.stats.objects_traversed == 1;
+          CHECK(serial.objects[3].outcome == sscc::SelfTestOutcome::kStatic);
+          CHECK(serial.objects[4].outcome == sscc::SelfTestOutcome::kCertified);
+        }
+        for (int threads : {2, 3, 5}) {
+          INFO("trial " << trial << " mode " << int(mode) << " certificates " << use_certificates << " threads "
+                        << threads);
+          options.threads = threads;
+          require_same_scene_report(scene.step(steps, options), serial);
+        }
+      }
+    }
+  }
+  CHECK(colliding >= 3);
+  CHECK(one_traversal >= 1);
+}

@@ -38,6 +38,19 @@ std::string table1_row(const std::string& name, const SceneRun& run, const std::
   return row.str();
 }
 
+/// A scene's times on one thread beside every thread (empty on one thread).
+std::string thread_row(const std::string& name, const SceneRun& run) {
+  if (run.sscc_one_thread.ms.empty()) return "";
+  std::ostringstream row;
+  row << "| " << name << " | " << run.threads << " | " << format("%.2f ms", run.sscc_one_thread.mean()) << " | "
+      << format("%.2f ms", run.sscc.mean()) << " | " << format("%.2fx", run.thread_speedup(run.sscc_one_thread, run.sscc))
+      << " | " << format("%.1f ms", run.traditional_one_thread.mean()) << " | "
+      << format("%.1f ms", run.traditional.mean()) << " | "
+      << format("%.2fx", run.thread_speedup(run.traditional_one_thread, run.traditional)) << " | "
+      << run.identical_thread_steps << "/" << run.steps << " |\n";
+  return row.str();
+}
+
 struct EpsilonRow {
   double epsilon, precompute_s, root_radius;
   double sscc_self_ms;           ///< mean per step, self-collision of all objects
@@ -210,6 +223,14 @@ long run_bench(const BenchOptions& o, std::ostream& out, std::ostream& progress)
      << table1_row("bunnies", bunnies, "linear modal, dropped and struck")
      << "| paper: dragon (polynomial) | 77,203 | 24 | 1 | linear | 89 min | 381 ms | 3.7 ms | 102.9x | - |\n";
   if (have_dragon) md << table1_row("dragon (polynomial)", dragon, "linear, dropped and struck");
+  if (!bunnies.sscc_one_thread.ms.empty()) {
+    md << "\nOne thread beside every thread (the same steps, in the same run; speedup: mean time per step on one "
+          "thread over that on all; identical: steps whose reports are the same on both):\n\n"
+       << "| example | threads | SSCC, 1 thread | SSCC | speedup | traditional, 1 thread | traditional | speedup | "
+          "identical |\n|---|---|---|---|---|---|---|---|---|\n"
+       << thread_row("spring", spring) << thread_row("bunnies", bunnies);
+    if (have_dragon) md << thread_row("dragon (polynomial)", dragon);
+  }
   md << "\nTable 2 (sixteen bunnies, average SCD cost per step):\n\n"
      << "| | traditional | SSCC | speedup |\n|---|---|---|---|\n"
      << "| paper: discrete SCD | 640 ms | 22 ms | 29.1x |\n"

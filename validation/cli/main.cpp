@@ -22,11 +22,15 @@
 #include "poses_command.hpp"
 #include "precompute_command.hpp"
 #include "selfccd_validation.hpp"
+#include "sscc/threads.hpp"
 
 namespace {
 
 const char* kUsage =
-    "usage: sscc <command> [options]\n"
+    "usage: sscc <command> [options] [--threads N]\n"
+    "\n"
+    "  --threads N: every command uses N threads (default: every core, or OMP_NUM_THREADS);\n"
+    "  the reports do not depend on it.\n"
     "\n"
     "commands:\n"
     "  kernels   validate the vertex-face and edge-edge kernels\n"
@@ -451,7 +455,21 @@ int run_selfccd(const std::vector<std::string>& args) {
 int main(int argc, char** argv) {
   if (argc < 2) usage_error("no command given");
   const std::string command = argv[1];
-  const std::vector<std::string> args(argv + 2, argv + argc);
+  std::vector<std::string> args;
+  for (int i = 2; i < argc; ++i) {  // --threads N, for every command
+    if (std::string(argv[i]) != "--threads") {
+      args.emplace_back(argv[i]);
+      continue;
+    }
+    if (i + 1 >= argc) usage_error("--threads needs a value");
+    const std::string value = argv[++i];
+    char* end = nullptr;
+    const long threads = std::strtol(value.c_str(), &end, 10);
+    if (value.empty() || *end != '\0' || threads < 1 || threads > 4096) {
+      usage_error("--threads expects a positive integer, got '" + value + "'");
+    }
+    sscc::set_default_threads(static_cast<int>(threads));
+  }
   try {
     if (command == "kernels") return run_kernels(args);
     if (command == "selfccd") return run_selfccd(args);

@@ -79,10 +79,15 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
       << " s, " << model.mesh().triangle_count() << " triangles and " << model.mode_count() << " modes each\n\n";
   out << "| method | mean ms/step | median ms/step | max ms/step | colliding steps | self pairs | inter-object pairs |\n"
       << "|---|---|---|---|---|---|---|\n";
-  for (const auto& [name, m] : {std::make_pair("SSCC (certificates and normal cones)", &run.sscc),
-                                std::make_pair("normal cones", &run.cones), std::make_pair("traditional", &run.traditional)}) {
-    std::snprintf(line, sizeof line, "| %s | %.3f | %.3f | %.3f | %d | %ld | %ld |\n", name, m->mean(), m->median(),
-                  m->max(), m->colliding_steps, m->self_pairs, m->inter_pairs);
+  const std::string all_threads = " (" + std::to_string(run.threads) + " threads)";
+  const std::string sscc_name = "SSCC" + (run.threads > 1 ? all_threads : "");
+  const std::string traditional_name = "traditional" + (run.threads > 1 ? all_threads : "");
+  for (const auto& [name, m] : {std::make_pair(sscc_name, &run.sscc), std::make_pair(std::string("SSCC (1 thread)"), &run.sscc_one_thread),
+                                std::make_pair(traditional_name, &run.traditional),
+                                std::make_pair(std::string("traditional (1 thread)"), &run.traditional_one_thread)}) {
+    if (m->ms.empty()) continue;
+    std::snprintf(line, sizeof line, "| %s | %.3f | %.3f | %.3f | %d | %ld | %ld |\n", name.c_str(), m->mean(),
+                  m->median(), m->max(), m->colliding_steps, m->self_pairs, m->inter_pairs);
     out << line;
   }
   if (!run.fcl_ms.empty()) {
@@ -98,10 +103,18 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
                 run.speedup(), run.all_certified_steps, run.steps, run.object_steps_certified,
                 static_cast<long>(run.objects) * run.steps, run.object_steps_traversed);
   out << line;
-  std::snprintf(line, sizeof line, "speedup normal cones over traditional: %.2fx; SSCC over normal cones: %.2fx\n",
-                run.traditional.mean() / std::max(run.cones.mean(), 1e-9), run.cones.mean() / std::max(run.sscc.mean(), 1e-9));
-  out << line;
-  out << "agreement: SSCC, normal cones and traditional reports identical on " << run.identical_steps << "/" << run.steps
+  if (run.threads > 1) {
+    std::snprintf(line, sizeof line,
+                  "threads: %d against 1, speedup (mean time per step): SSCC %.2fx (%.2fx per thread), traditional "
+                  "%.2fx (%.2fx per thread); reports identical on both thread counts on %d/%d steps\n",
+                  run.threads, run.thread_speedup(run.sscc_one_thread, run.sscc),
+                  run.thread_speedup(run.sscc_one_thread, run.sscc) / run.threads,
+                  run.thread_speedup(run.traditional_one_thread, run.traditional),
+                  run.thread_speedup(run.traditional_one_thread, run.traditional) / run.threads,
+                  run.identical_thread_steps, run.steps);
+    out << line;
+  }
+  out << "agreement: SSCC and traditional reports identical on " << run.identical_steps << "/" << run.steps
       << " steps";
   if (run.fcl_object_steps > 0) {
     out << "; FCL self-collision identical on " << run.fcl_identical << "/" << run.fcl_object_steps
@@ -113,11 +126,13 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
       << demo.output_dir << "\n";
   std::snprintf(line, sizeof line,
                 "demo: scene=%s objects=%d steps=%d colliding_steps=%d sscc_ms=%.3f traditional_ms=%.3f speedup=%.1f "
-                "agree=%s",
+                "threads=%d traditional_thread_speedup=%.2f agree=%s",
                 run.scene.c_str(), run.objects, run.steps, run.sscc.colliding_steps, run.sscc.mean(),
-                run.traditional.mean(), run.speedup(), run.agree() ? "yes" : "no");
+                run.traditional.mean(), run.speedup(), run.threads,
+                run.thread_speedup(run.traditional_one_thread, run.traditional), run.agree() ? "yes" : "no");
   out << line << '\n';
-  return (run.steps - run.identical_steps) + run.fcl_settled.unexplained;
+  const int thread_disagreements = run.sscc_one_thread.ms.empty() ? 0 : run.steps - run.identical_thread_steps;
+  return (run.steps - run.identical_steps) + thread_disagreements + run.fcl_settled.unexplained;
 }
 
 }  // namespace sscc::validation

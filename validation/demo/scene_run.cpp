@@ -12,6 +12,7 @@
 #include "fcl_self_ccd.hpp"
 #include "sscc/scene/scene.hpp"
 #include "statistics.hpp"
+#include "sscc/threads.hpp"
 
 namespace sscc::validation {
 
@@ -82,8 +83,12 @@ double SceneRun::speedup() const { return traditional.mean() / std::max(sscc.mea
 double SceneRun::discrete_speedup() const {
   return discrete_traditional.mean() / std::max(discrete_sscc.mean(), 1e-9);
 }
+double SceneRun::thread_speedup(const MethodTimes& one_thread, const MethodTimes& all) const {
+  return one_thread.ms.empty() ? 0.0 : one_thread.mean() / std::max(all.mean(), 1e-9);
+}
 bool SceneRun::agree() const {
   return identical_steps == steps && fcl_settled.unexplained == 0 &&
+         (sscc_one_thread.ms.empty() || identical_thread_steps == steps) &&
          (discrete_sscc.ms.empty() || identical_discrete_steps == steps);
 }
 
@@ -133,11 +138,12 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
            << " s; " << model.mesh().triangle_count() << " triangles, " << model.mode_count()
            << " modes; root certificate radius " << run.assets.certificates->node_radius(0) << '\n';
 
-  SceneOptions with, without, cones_only;
-  cones_only.use_certificates = false;
-  cones_only.use_normal_cones = true;
+  SceneOptions with, without;
   without.use_certificates = false;
   without.use_normal_cones = false;  // traditional: the plain swept-box query
+  run.threads = default_threads();
+  SceneOptions with_one_thread = with, without_one_thread = without;
+  with_one_thread.threads = without_one_thread.threads = 1;
   SelfCcdOptions discrete_with, discrete_without;
   discrete_without.use_certificates = false;
   std::vector<std::vector<ObjectStep>> sampled;  // the steps FCL sees
@@ -161,10 +167,16 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     t = std::chrono::steady_clock::now();
     const SceneReport slow = scene.step(steps, without);
     add_run(run.traditional, slow, milliseconds_since(t));
-    t = std::chrono::steady_clock::now();
-    const SceneReport culled = scene.step(steps, cones_only);
-    add_run(run.cones, culled, milliseconds_since(t));
-    run.identical_steps += same_reports(fast, slow) && same_reports(culled, slow);
+    run.identical_steps += same_reports(fast, slow);
+    if (run.threads > 1) {  // the same step on one thread, side by side
+      t = std::chrono::steady_clock::now();
+      const SceneReport fast_one = scene.step(steps, with_one_thread);
+      add_run(run.sscc_one_thread, fast_one, milliseconds_since(t));
+      t = std::chrono::steady_clock::now();
+      const SceneReport slow_one = scene.step(steps, without_one_thread);
+      add_run(run.traditional_one_thread, slow_one, milliseconds_since(t));
+      run.identical_thread_steps += same_reports(fast_one, fast) && same_reports(slow_one, slow);
+    }
     run.object_steps_certified += fast.stats.objects_certified;
     run.object_steps_traversed += fast.stats.objects_traversed;
     run.all_certified_steps += fast.stats.objects_traversed == 0;
@@ -182,7 +194,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     }
     if ((k + 1) % 50 == 0 || k + 1 == o.steps) {
       progress << "scene " << o.scene << ": step " << (k + 1) << "/" << o.steps << ", SSCC " << run.sscc.mean()
-               << " ms, cones " << run.cones.mean() << " ms, traditional " << run.traditional.mean()
+               << " ms, traditional " << run.traditional.mean()
                << " ms per step so far\n"
                << std::flush;
     }

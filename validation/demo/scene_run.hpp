@@ -60,10 +60,12 @@ struct SceneRun {
   int objects = 0, steps = 0;
   double dt = 0.0;
   DemoAssets assets;
-  MethodTimes sscc, traditional;
-  MethodTimes cones;                 ///< no certificates, normal cones (the traversal's own culls)
+  MethodTimes sscc, traditional;  ///< on every thread (sscc::default_threads())
+  int threads = 1;
+  MethodTimes sscc_one_thread, traditional_one_thread;  ///< the same steps on one thread, when threads > 1
+  int identical_thread_steps = 0;  ///< steps whose one-thread reports equal the all-thread ones (both methods)
   MethodTimes discrete_sscc, discrete_traditional;  ///< empty unless options.discrete
-  int identical_steps = 0;           ///< SSCC, cones and traditional reports identical
+  int identical_steps = 0;           ///< SSCC and traditional reports identical
   int identical_discrete_steps = 0;
   int all_certified_steps = 0;       ///< no object needed a traversal
   long object_steps_certified = 0, object_steps_traversed = 0;
@@ -75,6 +77,8 @@ struct SceneRun {
   double seconds = 0.0;
 
   double speedup() const;
+  /// Mean time per step on one thread over that on every thread (0 when threads == 1).
+  double thread_speedup(const MethodTimes& one_thread, const MethodTimes& all) const;
   double discrete_speedup() const;
   bool agree() const;
 };

@@ -20,6 +20,11 @@
 // identical and speedups compare like with like.
 // The certificates' guarantee is for the exact positions; see certificates.hpp.
 //
+// Parallel: the top of the traversal is expanded into node pairs, in the order the serial
+// traversal reaches them, that threads traverse independently, each with its own scratch;
+// their hits are merged in that order, so the report does not depend on the thread count
+// (SelfCcdOptions::threads). A step the root's certificate decides starts no thread.
+//
 // A built detector is immutable; query() keeps its scratch per call and is thread-safe.
 // It owns its hierarchy, model and certificates (shared with its copies).
 #pragma once
@@ -102,6 +107,12 @@ struct SelfCcdOptions {
   /// traversal (the contour test rejects most of the hierarchy's patches, whose boundaries
   /// are not star-shaped), so it does not yet pay for itself.
   bool use_normal_cones = false;
+  /// Threads for one query: 0 uses every thread OpenMP may use (the cores, or
+  /// OMP_NUM_THREADS), 1 the serial traversal. The report is the same for every count, in
+  /// the same order, first hits included; only the statistics differ (work that several
+  /// threads repeat, such as vertex positions, counts once per thread). query_discrete and
+  /// query_exhaustive run on one thread.
+  int threads = 0;
   /// The kernels' options. A minimum separation (kernel.minimum_separation > 0) cannot be
   /// combined with certificates, which bound contact, not proximity: such queries throw.
   ccd::CcdOptions kernel;
@@ -148,6 +159,10 @@ class SelfCcd {
   /// std::invalid_argument.
   SelfCcdReport query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                       const SelfCcdOptions& options = {}) const;
+
+  /// Whether the root's certificate alone decides the step (what query() then reports in
+  /// O(r)): false without usable certificates. Throws as query() does for a bad q.
+  bool root_certifies(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
 
   /// The traditional query on explicit vertex positions at both ends of the step (each
   /// vertex moving linearly): for poses the subspace does not hold, where certificates do

@@ -26,6 +26,11 @@
 // box test; the vertices of an object are computed only where another object's bounds
 // reach them; self and inter-object tests can be switched off per object.
 //
+// Parallel: the objects' self tests that need a traversal and the object pairs whose roots
+// meet are the step's tasks, shared by the threads (one such self test alone gets them all,
+// inside its query); the rest is decided before any thread starts. Results are merged in the
+// serial order, so the report is the same for every thread count (SceneOptions::threads).
+//
 // A built scene is immutable; step() keeps its scratch per call and is thread-safe.
 #pragma once
 
@@ -65,7 +70,10 @@ struct ObjectStep {
 /// The options of a step: those of the self queries, applied to every object's self test
 /// (mode for the whole step; use_certificates and use_normal_cones both false make every
 /// self test the traditional query; bounds; the kernels' options, also used between
-/// objects).
+/// objects). `threads` are the step's: 0 uses every thread OpenMP may use (the cores, or
+/// OMP_NUM_THREADS), 1 runs everything on the caller's thread. The report does not depend
+/// on it; the statistics' vertex counts and times may (self_seconds and inter_seconds add
+/// up the time of every thread).
 struct SceneOptions : SelfCcdOptions {};
 
 enum class SelfTestOutcome : std::uint8_t {
