@@ -78,6 +78,7 @@ std::vector<DyadicRoot> roots_in_unit_interval(const IntegerPolynomial& p) {
       r.polynomial = q;
       r.start = step.start;
       r.sign_at_start = sgn(step.b[0]);
+      r.on_piece = std::move(step.b);
       roots.push_back(std::move(r));
       continue;
     }
@@ -92,25 +93,102 @@ std::vector<DyadicRoot> roots_in_unit_interval(const IntegerPolynomial& p) {
   return roots;
 }
 
-void bisect(DyadicRoot& root) {
-  if (root.exact) return;
-  const Dyadic mid = right_child(root.start);
-  const int s = sign_at(root.polynomial, mid);
+namespace {
+
+/// Halves the root's piece; `companion` (another polynomial on the same piece) follows it.
+/// Returns the companion's sign at the root when the midpoint is the root, else 2.
+int bisect_with(DyadicRoot& root, Bernstein* companion) {
+  Bernstein left;
+  Bernstein right;
+  split(root.on_piece, left, right);
+  Bernstein companion_left;
+  Bernstein companion_right;
+  if (companion) split(*companion, companion_left, companion_right);
+  const int s = sgn(left[kMaxDegree]);  // the polynomial at the midpoint
   if (s == 0) {
-    root.start = mid;
+    root.start = right_child(root.start);
     root.exact = true;
-  } else if (s == root.sign_at_start) {
-    root.start = mid;
-  } else {
-    root.start = left_child(root.start);
+    return companion ? sgn(companion_left[kMaxDegree]) : 2;
   }
+  const bool go_right = s == root.sign_at_start;
+  root.start = go_right ? right_child(root.start) : left_child(root.start);
+  root.on_piece = go_right ? std::move(right) : std::move(left);
+  if (companion) *companion = go_right ? std::move(companion_right) : std::move(companion_left);
+  return 2;
+}
+
+/// Bisections between Newton attempts while a sign stays undecided: bisection gains a bit
+/// a step whatever happens; Newton doubles the bits once close enough, which is what
+/// roots 2^-1000 apart (coordinates of very different magnitudes) need.
+constexpr int kBisectionsPerNewtonStep = 16;
+
+/// One Newton step from the piece's midpoint to twice its bits, kept only when the signs of
+/// the polynomial on both sides of the new estimate (one unit of the finer grid away)
+/// prove the root is there. Returns false, changing nothing, when they do not.
+bool newton_step(DyadicRoot& root) {
+  const IntegerPolynomial& p = root.polynomial;
+  const IntegerPolynomial slope = derivative(p);
+  const Dyadic mid = right_child(root.start);
+  const mpz_class value = scaled_value(p, mid);             // p(x) 2^(k1 d)
+  const mpz_class slope_value = scaled_value(slope, mid);   // p'(x) 2^(k1 (d - 1))
+  if (sgn(slope_value) == 0) return false;
+  // x - p(x) / p'(x) on the grid 2^-fine: p / p' = value / (slope_value 2^k1).
+  const unsigned long fine = 2 * mid.k;
+  const mpz_class step = mpz_class(value << (fine - mid.k)) / slope_value;
+  const Dyadic estimate{mpz_class(mid.a << (fine - mid.k)) - step, fine};
+  const Dyadic below{estimate.a - 1, fine};
+  const Dyadic above{estimate.a + 1, fine};
+  if (compare(below, root.start) < 0 || compare(above, piece_end(root.start)) > 0) return false;
+  const int s_below = sign_at(p, below);
+  const int s_estimate = sign_at(p, estimate);
+  const int s_above = sign_at(p, above);
+  // r is p's only root in the old piece, so any zero or sign change inside it is r.
+  const Dyadic* zero = s_below == 0 ? &below : s_estimate == 0 ? &estimate : s_above == 0 ? &above : nullptr;
+  if (zero) {
+    root.start = *zero;
+    root.exact = true;
+    return true;
+  }
+  if (s_below != s_estimate) {
+    root.start = below;
+    root.sign_at_start = s_below;
+  } else if (s_estimate != s_above) {
+    root.start = estimate;
+    root.sign_at_start = s_estimate;
+  } else {
+    return false;
+  }
+  root.on_piece = bernstein_on_piece(p, root.start);
+  return true;
+}
+
+/// Narrows the root's piece: a bisection, or every few steps a Newton step. `companion`
+/// (another polynomial's coefficients on the piece) follows. Returns the companion's sign
+/// at the root when the root turns out exact, else 2.
+int narrow(DyadicRoot& root, int& steps, const IntegerPolynomial* companion_polynomial,
+           Bernstein* companion) {
+  if (++steps % kBisectionsPerNewtonStep == 0 && newton_step(root)) {
+    if (root.exact) return companion ? sign_at(*companion_polynomial, root.start) : 2;
+    if (companion) *companion = bernstein_on_piece(*companion_polynomial, root.start);
+    return 2;
+  }
+  return bisect_with(root, companion);
+}
+
+}  // namespace
+
+void bisect(DyadicRoot& root) {
+  if (!root.exact) bisect_with(root, nullptr);
 }
 
 int sign_at_root(const IntegerPolynomial& g, DyadicRoot& root) {
   if (g.is_zero()) return 0;
+  if (root.exact) return sign_at(g, root.start);
+  Bernstein g_on_piece = bernstein_on_piece(g, root.start);
   bool zero_excluded = false;
-  while (!root.exact) {
-    const int s = uniform_sign(bernstein_on_piece(g, root.start));
+  int steps = 0;
+  while (true) {
+    const int s = uniform_sign(g_on_piece);
     if (s != 0) return s;
     if (!zero_excluded) {
       // g may vanish at the root: exactly when it shares a factor with the root's
@@ -118,13 +196,15 @@ int sign_at_root(const IntegerPolynomial& g, DyadicRoot& root) {
       if (common_root_in_piece(gcd(root.polynomial, g), root.start, piece_end(root.start))) return 0;
       zero_excluded = true;
     }
-    bisect(root);
+    const int at_root = narrow(root, steps, &g, &g_on_piece);
+    if (at_root != 2) return at_root;
   }
-  return sign_at(g, root.start);
 }
 
 int compare(DyadicRoot& a, DyadicRoot& b) {
   bool equality_excluded = false;
+  int a_steps = 0;
+  int b_steps = 0;
   while (true) {
     if (certainly_below(a, b)) return -1;
     if (certainly_below(b, a)) return 1;
@@ -132,12 +212,12 @@ int compare(DyadicRoot& a, DyadicRoot& b) {
     if (a.exact) {
       // a lies in b's open piece: equal iff a is a root of b's polynomial there.
       if (sign_at(b.polynomial, a.start) == 0) return 0;
-      bisect(b);
+      narrow(b, b_steps, nullptr, nullptr);
       continue;
     }
     if (b.exact) {
       if (sign_at(a.polynomial, b.start) == 0) return 0;
-      bisect(a);
+      narrow(a, a_steps, nullptr, nullptr);
       continue;
     }
     if (!equality_excluded) {
@@ -148,8 +228,9 @@ int compare(DyadicRoot& a, DyadicRoot& b) {
       if (common_root_in_piece(gcd(a.polynomial, b.polynomial), lo, hi)) return 0;
       equality_excluded = true;
     }
-    bisect(a);
-    bisect(b);
+    // The wider piece first: narrowing the other would not separate them any sooner.
+    if (a.start.k <= b.start.k) narrow(a, a_steps, nullptr, nullptr);
+    if (b.start.k <= a.start.k) narrow(b, b_steps, nullptr, nullptr);
   }
 }
 

@@ -20,6 +20,9 @@ struct DyadicRoot {
   Dyadic start;                  ///< the root itself when exact, else its piece's start
   bool exact = false;
   int sign_at_start = 0;         ///< of `polynomial`, when not exact (never 0)
+  /// `polynomial` on the piece, when not exact: narrowing splits it (additions and shifts)
+  /// rather than evaluating at the midpoint (products of long integers).
+  Bernstein on_piece;
 };
 
 /// The distinct real roots of p in the closed interval [0, 1], in increasing order.

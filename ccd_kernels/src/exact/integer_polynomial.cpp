@@ -43,7 +43,7 @@ IntegerPolynomial operator*(const IntegerPolynomial& a, const IntegerPolynomial&
   return r;
 }
 
-int sign_at(const IntegerPolynomial& p, const Dyadic& x) {
+mpz_class scaled_value(const IntegerPolynomial& p, const Dyadic& x) {
   if (p.is_zero()) return 0;
   // p(a / 2^k) 2^(k d) = sum c_i a^i 2^(k (d - i)), by Horner.
   mpz_class value = p.c[p.degree];
@@ -53,7 +53,14 @@ int sign_at(const IntegerPolynomial& p, const Dyadic& x) {
     mpz_mul_2exp(term.get_mpz_t(), p.c[i].get_mpz_t(), x.k * static_cast<unsigned long>(p.degree - i));
     value += term;
   }
-  return sgn(value);
+  return value;
+}
+
+IntegerPolynomial derivative(const IntegerPolynomial& p) {
+  IntegerPolynomial d;
+  for (int i = 1; i <= p.degree; ++i) d.c[i - 1] = p.c[i] * i;
+  d.trim();
+  return d;
 }
 
 Bernstein bernstein_on_piece(const IntegerPolynomial& p, const Dyadic& piece_start) {
@@ -172,12 +179,10 @@ IntegerPolynomial gcd(const IntegerPolynomial& a, const IntegerPolynomial& b) {
 }
 
 IntegerPolynomial squarefree_part(const IntegerPolynomial& p) {
-  IntegerPolynomial derivative;
-  for (int i = 1; i <= p.degree; ++i) derivative.c[i - 1] = p.c[i] * i;
-  derivative.trim();
+  const IntegerPolynomial slope = derivative(p);
   IntegerPolynomial result = p;
-  if (!derivative.is_zero()) {
-    const IntegerPolynomial common = gcd(p, derivative);
+  if (!slope.is_zero()) {
+    const IntegerPolynomial common = gcd(p, slope);
     if (common.degree >= 1) {
       IntegerPolynomial remainder;
       pseudo_divide(p, common, result, remainder);

@@ -44,8 +44,11 @@ struct Dyadic {
   unsigned long k = 0;
 };
 
+/// p(a / 2^k) 2^(k deg p): an integer, of the sign of p at a / 2^k.
+mpz_class scaled_value(const IntegerPolynomial& p, const Dyadic& x);
 /// Sign (-1, 0, +1) of p at a / 2^k.
-int sign_at(const IntegerPolynomial& p, const Dyadic& x);
+inline int sign_at(const IntegerPolynomial& p, const Dyadic& x) { return sgn(scaled_value(p, x)); }
+IntegerPolynomial derivative(const IntegerPolynomial& p);
 
 /// The Bernstein coefficients of p, raised to degree kMaxDegree, on the piece
 /// [a / 2^k, (a + 1) / 2^k], each multiplied by the same positive integer: the polynomial
