@@ -121,6 +121,9 @@ int bisect_with(DyadicRoot& root, Bernstein* companion) {
 /// a step whatever happens; Newton doubles the bits once close enough, which is what
 /// roots 2^-1000 apart (coordinates of very different magnitudes) need.
 constexpr int kBisectionsPerNewtonStep = 16;
+/// Narrowings tried before the gcd that tests whether a sign is exactly zero: a non-zero
+/// sign usually shows within a few (additions only), the gcd costs coefficient gcds.
+constexpr int kNarrowingsBeforeZeroTest = 6;
 
 /// One Newton step from the piece's midpoint to twice its bits, kept only when the signs of
 /// the polynomial on both sides of the new estimate (one unit of the finer grid away)
@@ -190,7 +193,7 @@ int sign_at_root(const IntegerPolynomial& g, DyadicRoot& root) {
   while (true) {
     const int s = uniform_sign(g_on_piece);
     if (s != 0) return s;
-    if (!zero_excluded) {
+    if (!zero_excluded && steps >= kNarrowingsBeforeZeroTest) {
       // g may vanish at the root: exactly when it shares a factor with the root's
       // polynomial that vanishes in the piece. Otherwise narrowing ends with one sign.
       if (common_root_in_piece(gcd(root.polynomial, g), root.start, piece_end(root.start))) return 0;

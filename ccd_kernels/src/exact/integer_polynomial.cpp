@@ -162,6 +162,12 @@ void pseudo_divide(const IntegerPolynomial& a, const IntegerPolynomial& b, Integ
 
 }  // namespace
 
+IntegerPolynomial primitive_positive(const IntegerPolynomial& p) {
+  IntegerPolynomial q = p;
+  make_primitive(q);
+  return !q.is_zero() && sgn(q.c[q.degree]) < 0 ? -q : q;
+}
+
 IntegerPolynomial gcd(const IntegerPolynomial& a, const IntegerPolynomial& b) {
   IntegerPolynomial x = a;
   IntegerPolynomial y = b;
@@ -181,7 +187,9 @@ IntegerPolynomial gcd(const IntegerPolynomial& a, const IntegerPolynomial& b) {
 IntegerPolynomial squarefree_part(const IntegerPolynomial& p) {
   const IntegerPolynomial slope = derivative(p);
   IntegerPolynomial result = p;
-  if (!slope.is_zero()) {
+  // Lines are square-free, and so are quadratics with a non-zero discriminant.
+  const bool squarefree = p.degree <= 1 || (p.degree == 2 && sgn(p.c[1] * p.c[1] - 4 * p.c[0] * p.c[2]) != 0);
+  if (!squarefree && !slope.is_zero()) {
     const IntegerPolynomial common = gcd(p, slope);
     if (common.degree >= 1) {
       IntegerPolynomial remainder;

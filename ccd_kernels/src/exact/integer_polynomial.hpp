@@ -64,6 +64,13 @@ int uniform_sign(const Bernstein& b);
 /// in the open piece, of the same parity (Descartes' rule in the Bernstein basis).
 int sign_variations(const Bernstein& b);
 
+/// p divided by the gcd of its coefficients, with a positive leading coefficient: equal
+/// for polynomials that differ by a constant factor.
+IntegerPolynomial primitive_positive(const IntegerPolynomial& p);
+inline bool operator==(const IntegerPolynomial& a, const IntegerPolynomial& b) {
+  return a.degree == b.degree && a.c == b.c;
+}
+
 /// Greatest common divisor up to a constant factor (primitive, integer coefficients);
 /// zero when both are zero.
 IntegerPolynomial gcd(const IntegerPolynomial& a, const IntegerPolynomial& b);

@@ -145,14 +145,27 @@ std::optional<DyadicRoot> first_contact_root(const Conditions& c) {
     }
     return std::nullopt;
   }
-  std::vector<DyadicRoot> candidates{exact_stage::exact_root({0, 0})};
+  // Motion that stays coplanar: contact at the start settles it (the common case of
+  // resting contact) before any root is isolated.
+  DyadicRoot start = exact_stage::exact_root({0, 0});
+  if (touch_at(c, start)) return start;
+  // Each distinct polynomial once (up to sign and scale, the same roots): projections onto
+  // planes the motion is perpendicular to repeat one another.
+  std::vector<IntegerPolynomial> distinct;
   for (const PlaneConditions& plane : c.planes) {
     for (const auto* list : {&plane.orientations, &plane.between}) {
       for (const IntegerPolynomial& p : *list) {
-        if (p.is_zero()) continue;
-        for (DyadicRoot& r : exact_stage::roots_in_unit_interval(p)) candidates.push_back(std::move(r));
+        if (p.degree <= 0) continue;
+        const IntegerPolynomial q = exact_stage::primitive_positive(p);
+        if (std::none_of(distinct.begin(), distinct.end(), [&](const IntegerPolynomial& d) { return d == q; })) {
+          distinct.push_back(q);
+        }
       }
     }
+  }
+  std::vector<DyadicRoot> candidates;
+  for (const IntegerPolynomial& p : distinct) {
+    for (DyadicRoot& r : exact_stage::roots_in_unit_interval(p)) candidates.push_back(std::move(r));
   }
   std::optional<DyadicRoot> first;
   for (DyadicRoot& t : candidates) {
