@@ -1,6 +1,7 @@
 #include "contact_params.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <initializer_list>
 #include <utility>
@@ -165,16 +166,30 @@ void segment_params(const Vector3d& a0, const Vector3d& a1, const Vector3d& b0,
 /// to [0.5, 1): exact (coordinates far below the largest may underflow, which moves them
 /// by less than 2^-1074 of it). Each coordinate is scaled on its own, since the factor
 /// itself, 2^-exponent, overflows when the largest magnitude is subnormal.
-void normalize_scale(Vector3d* x, int count) {
+double largest_magnitude(const Vector3d* x, int count) {
   double magnitude = 0.0;
   for (int i = 0; i < count; ++i) magnitude = std::max(magnitude, x[i].cwiseAbs().maxCoeff());
+  return magnitude;
+}
+
+void normalize_scale(Vector3d* x, int count) {
+  const double magnitude = largest_magnitude(x, count);
   if (magnitude == 0.0) return;
   int exponent = 0;
   std::frexp(magnitude, &exponent);
+  if (exponent > DBL_MIN_EXP) {  // 2^-exponent is a double: one exact product per coordinate
+    const double factor = std::ldexp(1.0, -exponent);
+    for (int i = 0; i < count; ++i) x[i] *= factor;
+    return;
+  }
   for (int i = 0; i < count; ++i) {
     x[i] = x[i].unaryExpr([exponent](double c) { return std::ldexp(c, -exponent); });
   }
 }
+
+/// Below this largest coordinate magnitude the interpolation (1 - t) x0 + t x1 may lose
+/// digits to subnormal products, so the end points are scaled up first.
+constexpr double kInterpolationUnderflowRisk = 0x1p-900;
 
 }  // namespace
 
@@ -187,7 +202,7 @@ void contact_params_at(const FourPointMotion& motion, double t, double params[2]
     ends[i] = motion.t0[i];
     ends[i + 4] = motion.t1[i];
   }
-  normalize_scale(ends, 8);
+  if (largest_magnitude(ends, 8) < kInterpolationUnderflowRisk) normalize_scale(ends, 8);
   Vector3d x[4];
   for (int i = 0; i < 4; ++i) x[i] = (1.0 - t) * ends[i] + t * ends[i + 4];
   for (int i = 1; i < 4; ++i) x[i] -= x[0];
