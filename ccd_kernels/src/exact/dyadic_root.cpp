@@ -2,6 +2,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <utility>
 
 namespace sscc::ccd::exact_stage {
 
@@ -98,11 +99,12 @@ namespace {
 /// Halves the root's piece; `companion` (another polynomial on the same piece) follows it.
 /// Returns the companion's sign at the root when the midpoint is the root, else 2.
 int bisect_with(DyadicRoot& root, Bernstein* companion) {
-  Bernstein left;
-  Bernstein right;
+  // Scratch kept per thread (the halves are swapped in, so their limbs are reused).
+  thread_local Bernstein left;
+  thread_local Bernstein right;
+  thread_local Bernstein companion_left;
+  thread_local Bernstein companion_right;
   split(root.on_piece, left, right);
-  Bernstein companion_left;
-  Bernstein companion_right;
   if (companion) split(*companion, companion_left, companion_right);
   const int s = sgn(left[kMaxDegree]);  // the polynomial at the midpoint
   if (s == 0) {
@@ -112,8 +114,8 @@ int bisect_with(DyadicRoot& root, Bernstein* companion) {
   }
   const bool go_right = s == root.sign_at_start;
   root.start = go_right ? right_child(root.start) : left_child(root.start);
-  root.on_piece = go_right ? std::move(right) : std::move(left);
-  if (companion) *companion = go_right ? std::move(companion_right) : std::move(companion_left);
+  std::swap(root.on_piece, go_right ? right : left);
+  if (companion) std::swap(*companion, go_right ? companion_right : companion_left);
   return 2;
 }
 

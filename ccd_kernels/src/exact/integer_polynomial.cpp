@@ -47,7 +47,7 @@ mpz_class scaled_value(const IntegerPolynomial& p, const Dyadic& x) {
   if (p.is_zero()) return 0;
   // p(a / 2^k) 2^(k d) = sum c_i a^i 2^(k (d - i)), by Horner.
   mpz_class value = p.c[p.degree];
-  mpz_class term;
+  thread_local mpz_class term;  // scratch, limbs reused
   for (int i = p.degree - 1; i >= 0; --i) {
     value *= x.a;
     mpz_mul_2exp(term.get_mpz_t(), p.c[i].get_mpz_t(), x.k * static_cast<unsigned long>(p.degree - i));
@@ -65,8 +65,9 @@ IntegerPolynomial derivative(const IntegerPolynomial& p) {
 
 Bernstein bernstein_on_piece(const IntegerPolynomial& p, const Dyadic& piece_start) {
   // q(s) = 2^(3k) p((a + s) / 2^k) for s in [0, 1], by Horner in polynomials of s.
-  std::array<mpz_class, kMaxDegree + 1> q;
-  mpz_class term;
+  thread_local std::array<mpz_class, kMaxDegree + 1> q;  // scratch, limbs reused
+  thread_local mpz_class term;
+  for (mpz_class& x : q) x = 0;
   for (int i = kMaxDegree; i >= 0; --i) {
     for (int j = kMaxDegree; j >= 0; --j) {
       q[j] *= piece_start.a;
@@ -88,7 +89,9 @@ Bernstein bernstein_on_piece(const IntegerPolynomial& p, const Dyadic& piece_sta
 void split(const Bernstein& whole, Bernstein& left, Bernstein& right) {
   // de Casteljau at 1/2 without the halvings: level l's values carry a factor 2^l, so
   // both halves are scaled by 2^3 once each level's value is shifted by 3 - l.
-  Bernstein work = whole;
+  // Scratch kept per thread: its limbs are reused rather than allocated on every split.
+  thread_local Bernstein work;
+  for (int i = 0; i <= kMaxDegree; ++i) work[i] = whole[i];
   left[0] = work[0] << kMaxDegree;
   right[kMaxDegree] = work[kMaxDegree] << kMaxDegree;
   for (int level = 1; level <= kMaxDegree; ++level) {
