@@ -15,10 +15,12 @@
 #include <vector>
 
 #include "agreement.hpp"
+#include "degenerate_benchmark.hpp"
 #include "fcl_kernels.hpp"
 #include "plot.hpp"
 #include "query_generators.hpp"
 #include "query_set.hpp"
+#include "slow_query_search.hpp"
 #include "statistics.hpp"
 
 namespace sscc::validation {
@@ -258,6 +260,10 @@ long report_random(const KernelValidationOptions& options, std::ostream& out,
     problems += report_generated("random", kinds[k], random[k], options, out, progress);
     problems += report_generated("near-degenerate", kinds[k], degenerate[k], options, out, progress);
   }
+  for (const DegenerateSetTiming& t : run_degenerate_benchmark(std::max(1L, options.random / 10), options.seed,
+                                                                out, progress)) {
+    problems += t.disagreements;
+  }
   const std::size_t n = std::min<std::size_t>(100000, random[0].size());
   sweep_time_against_error({random[0].begin(), random[0].begin() + n},
                            {random[1].begin(), random[1].begin() + n}, options, out, progress);
@@ -280,6 +286,9 @@ long run_kernel_validation(const KernelValidationOptions& options, std::ostream&
   long problems = 0;
   if (!options.queries_dir.empty()) problems += report_query_set(options, out, progress);
   if (options.random > 0) problems += report_random(options, out, progress);
+  if (options.search_slow > 0) {
+    problems += report_slow_query_search({options.search_slow, options.seed, options.exponent_range}, out, progress);
+  }
   return problems;
 }
 

@@ -20,6 +20,10 @@ struct KernelValidationOptions {
   std::string output_dir = "validation-output";
   /// Timing repeats; the median is reported.
   int repeats = 5;
+  /// Hill-climbing steps of the slow-query search per kind (0 to skip it), and the range
+  /// of coordinate exponents it may use.
+  long search_slow = 0;
+  int exponent_range = 1074;
 };
 
 /// Mean kernel time per query at one time-of-impact tolerance.

@@ -102,6 +102,18 @@ Query random_query(Kind kind, std::mt19937_64& rng) {
   return q;
 }
 
+Query integer_grid_query(Kind kind, std::mt19937_64& rng, int range) {
+  Query q{kind, {}};
+  for (auto& p : q.points) p = grid_point(rng, range);
+  return q;
+}
+
+Query resting_contact_query(Kind kind, std::mt19937_64& rng) {
+  Query q{kind, {}};
+  for (auto& p : q.points) p = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), 0.0);
+  return q;
+}
+
 Query near_degenerate_query(Kind kind, std::mt19937_64& rng) {
   const int family = integer(rng, 0, 2);
   Query q = family == 0 ? built_contact(kind, rng) : grid_query(kind, rng, family == 2);

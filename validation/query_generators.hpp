@@ -19,5 +19,10 @@ namespace sscc::validation {
 
 Query random_query(Kind kind, std::mt19937_64& rng);
 Query near_degenerate_query(Kind kind, std::mt19937_64& rng);
+/// All 24 coordinates uniform integers in {-range, ..., range} (grid-aligned models, tests).
+Query integer_grid_query(Kind kind, std::mt19937_64& rng, int range = 2);
+/// Resting contact: every point in the plane z = 0 at both ends of the step, at uniform
+/// positions in [-1, 1]^2 (a vertex, or an edge, sliding on a face's plane).
+Query resting_contact_query(Kind kind, std::mt19937_64& rng);
 
 }  // namespace sscc::validation

@@ -1,6 +1,7 @@
 #include "contact_params.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <initializer_list>
 #include <utility>
@@ -161,25 +162,52 @@ void segment_params(const Vector3d& a0, const Vector3d& a1, const Vector3d& b0,
   params[1] = closest_on_segment(a0 + params[0] * da, b0, b1);
 }
 
+/// Scales the points by the power of two that brings their largest coordinate magnitude
+/// to [0.5, 1): exact (coordinates far below the largest may underflow, which moves them
+/// by less than 2^-1074 of it). Each coordinate is scaled on its own, since the factor
+/// itself, 2^-exponent, overflows when the largest magnitude is subnormal.
+double largest_magnitude(const Vector3d* x, int count) {
+  double magnitude = 0.0;
+  for (int i = 0; i < count; ++i) magnitude = std::max(magnitude, x[i].cwiseAbs().maxCoeff());
+  return magnitude;
+}
+
+void normalize_scale(Vector3d* x, int count) {
+  const double magnitude = largest_magnitude(x, count);
+  if (magnitude == 0.0) return;
+  int exponent = 0;
+  std::frexp(magnitude, &exponent);
+  if (exponent > DBL_MIN_EXP) {  // 2^-exponent is a double: one exact product per coordinate
+    const double factor = std::ldexp(1.0, -exponent);
+    for (int i = 0; i < count; ++i) x[i] *= factor;
+    return;
+  }
+  for (int i = 0; i < count; ++i) {
+    x[i] = x[i].unaryExpr([exponent](double c) { return std::ldexp(c, -exponent); });
+  }
+}
+
+/// Below this largest coordinate magnitude the interpolation (1 - t) x0 + t x1 may lose
+/// digits to subnormal products, so the end points are scaled up first.
+constexpr double kInterpolationUnderflowRisk = 0x1p-900;
+
 }  // namespace
 
 void contact_params_at(const FourPointMotion& motion, double t, double params[2]) {
+  // The parameters depend neither on position nor on scale. Scaled first, so that the
+  // interpolation below keeps its digits for subnormal inputs; then centred on x[0] and
+  // scaled again, so that squared cross products can neither overflow nor vanish.
+  Vector3d ends[8];
+  for (int i = 0; i < 4; ++i) {
+    ends[i] = motion.t0[i];
+    ends[i + 4] = motion.t1[i];
+  }
+  if (largest_magnitude(ends, 8) < kInterpolationUnderflowRisk) normalize_scale(ends, 8);
   Vector3d x[4];
-  for (int i = 0; i < 4; ++i) x[i] = (1.0 - t) * motion.t0[i] + t * motion.t1[i];
-  // The parameters do not depend on position or scale: centre on x[0] and scale by a power
-  // of two to magnitude about 1, so squared cross products can neither overflow nor vanish.
-  double magnitude = 0.0;
-  for (int i = 1; i < 4; ++i) {
-    x[i] -= x[0];
-    magnitude = std::max(magnitude, x[i].cwiseAbs().maxCoeff());
-  }
+  for (int i = 0; i < 4; ++i) x[i] = (1.0 - t) * ends[i] + t * ends[i + 4];
+  for (int i = 1; i < 4; ++i) x[i] -= x[0];
   x[0].setZero();
-  if (magnitude > 0.0) {
-    int exponent = 0;
-    std::frexp(magnitude, &exponent);
-    const double scale = std::ldexp(1.0, -exponent);
-    for (int i = 1; i < 4; ++i) x[i] *= scale;
-  }
+  normalize_scale(x + 1, 3);
   if (motion.pair == PrimitivePair::kVertexFace) {
     triangle_params(x[3], x[0], x[1], x[2], params);
   } else {

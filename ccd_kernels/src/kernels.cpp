@@ -140,11 +140,10 @@ CcdResult decide(const FourPointMotion& motion, const CcdOptions& options) {
   }
   if (!result.hit) {
     result.decided_by = DecidedBy::kExact;
-    std::optional<exact::RealRoot> first = exact_first_contact(motion);
+    const std::optional<double> first = exact_first_contact(motion, tolerance);
     if (!first) return result;
-    exact::refine(*first, mpq_class(tolerance) / 2);
     result.hit = true;
-    result.toi = exact::round_down(first->lo);
+    result.toi = *first;
   }
   contact_params_at(motion, result.toi, result.params);
   return result;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "demo/scene_run.hpp"
+#include "degenerate_benchmark.hpp"
 #include "kernel_validation.hpp"
 #include "plot.hpp"
 
@@ -209,6 +210,9 @@ long run_bench(const BenchOptions& o, std::ostream& out, std::ostream& progress)
   progress << "bench: kernels against the time-of-impact tolerance (" << o.kernel_queries << " queries per kind)\n";
   const std::vector<ToleranceTiming> tolerances = time_against_toi_tolerance(o.kernel_queries, o.seed, 3);
   tolerance_plot(tolerances, o.output_dir, progress);
+  std::ostringstream degenerate_lines;  // the per-stage lines; the table below summarises them
+  const std::vector<DegenerateSetTiming> degenerate =
+      run_degenerate_benchmark(o.kernel_queries / 10, o.seed, degenerate_lines, progress);
 
   std::ostringstream md;
   md << "## Beside the SSCC paper (Barbic and James 2010)\n\n"
@@ -259,11 +263,22 @@ long run_bench(const BenchOptions& o, std::ostream& out, std::ostream& progress)
   }
   const auto [self_ccd_md, self_ccd_disagreements] = self_ccd_section(o, progress);
   md << self_ccd_md;
+  md << "\nKernels on degenerate geometry (" << o.kernel_queries / 10
+     << " queries per set and kind, each timed alone; FCL beside it, which misses contacts there):\n\n"
+     << "| set | kind | median | mean | p99 | max | FCL mean | disagreements with the exact reference |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (const DegenerateSetTiming& t : degenerate) {
+    md << "| " << t.set << " | " << to_string(t.kind) << " | " << format("%.2f us", t.sscc.median_us) << " | "
+       << format("%.2f us", t.sscc.mean_us) << " | " << format("%.1f us", t.sscc.p99_us) << " | "
+       << format("%.1f us", t.sscc.max_us) << " | " << format("%.2f us", t.fcl_mean_us) << " | " << t.disagreements
+       << " |\n";
+  }
   std::ofstream(o.output_dir + "/bench.md") << md.str();
   out << md.str();
   long disagreements = self_ccd_disagreements + (bunnies.steps - bunnies.identical_steps) + (bunnies.steps - bunnies.identical_discrete_steps) +
                        (spring.steps - spring.identical_steps) + (dragon.steps - dragon.identical_steps);
   for (const EpsilonRow& r : epsilons) disagreements += !r.identical;
+  for (const DegenerateSetTiming& t : degenerate) disagreements += t.disagreements;
   out << "\nbench: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
       << " s; tables in " << o.output_dir << "/bench.md; disagreements " << disagreements << '\n';
   return disagreements;

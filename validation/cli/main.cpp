@@ -35,10 +35,13 @@ const char* kUsage =
     "commands:\n"
     "  kernels   validate the vertex-face and edge-edge kernels\n"
     "            --queries DIR   the public CCD query set (e.g. ../shared/data/ccd-sample-queries)\n"
-    "            --random N      N random queries of each kind (and N/10 near-degenerate ones)\n"
+    "            --random N      N random queries of each kind (and N/10 near-degenerate, integer-grid\n"
+    "                            and resting-contact ones, timed per query and per stage)\n"
     "            --seed S        seed of the random queries (default 1)\n"
     "            --output DIR    CSV files and plots of the sweeps (default validation-output)\n"
     "            --repeats R     timing repeats, the median is reported (default 5)\n"
+    "            --search-slow N hill-climb N steps per kind for the slowest query\n"
+    "            --exponent-range E  coordinates the search makes stay within 2^-E..2^E (default 1074)\n"
     "            --quiet         no progress output\n"
     "  precompute  the certificates of a model, written to a certificate file\n"
     "            --mesh FILE --basis B --weights FILE   the model, as for selfccd\n"
@@ -207,15 +210,18 @@ int run_report(const Options& options, bool quiet, Report report, const std::str
 }
 
 int run_kernels(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(args, {"--queries", "--random", "--seed", "--output", "--repeats"}, "kernels");
+  const Flags flags = parse_flags(
+      args, {"--queries", "--random", "--seed", "--output", "--repeats", "--search-slow", "--exponent-range"}, "kernels");
   sscc::validation::KernelValidationOptions options;
   if (flags.has("--queries")) options.queries_dir = flags.text("--queries");
   if (flags.has("--random")) options.random = flags.number<long>("--random");
   if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
   if (flags.has("--output")) options.output_dir = flags.text("--output");
   if (flags.has("--repeats")) options.repeats = flags.number<int>("--repeats");
-  if (options.queries_dir.empty() && options.random == 0) {
-    usage_error("kernels needs --queries DIR or --random N");
+  if (flags.has("--search-slow")) options.search_slow = flags.number<long>("--search-slow");
+  if (flags.has("--exponent-range")) options.exponent_range = flags.number<int>("--exponent-range");
+  if (options.queries_dir.empty() && options.random == 0 && options.search_slow == 0) {
+    usage_error("kernels needs --queries DIR, --random N or --search-slow N");
   }
   return run_report(options, flags.quiet, sscc::validation::run_kernel_validation, "kernels");
 }

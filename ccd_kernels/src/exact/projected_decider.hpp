@@ -1,5 +1,7 @@
-// The kernels' exact fallback: decides contact of four linearly moving points (see
-// four_point_motion.hpp) in rational arithmetic, for any double input.
+// The kernels' exact stage: decides contact of four linearly moving points (see
+// four_point_motion.hpp) exactly, for any double input, in integer arithmetic (all
+// coordinates scaled by one power of two; exact_stage's integer polynomials and dyadic
+// roots).
 //
 // Guarantee: exact. Contact at t means: the four points are coplanar (det(e1, e2, e3) = 0)
 // and, in each of the three coordinate planes, the projected primitives touch. The second
@@ -15,11 +17,11 @@
 #include <optional>
 
 #include "four_point_motion.hpp"
-#include "sscc/ccd/exact/polynomial.hpp"
 
 namespace sscc::ccd {
 
-/// The first contact time, or nothing when the primitives never touch in [0, 1].
-std::optional<exact::RealRoot> exact_first_contact(const FourPointMotion& motion);
+/// The first contact time t*, rounded down to a double in [t* - toi_tolerance, t*], or
+/// nothing when the primitives never touch in [0, 1]. toi_tolerance >= kMinToiTolerance.
+std::optional<double> exact_first_contact(const FourPointMotion& motion, double toi_tolerance);
 
 }  // namespace sscc::ccd

@@ -1,0 +1,47 @@
+// Real roots in [0, 1] of the kernels' integer predicate polynomials, held as dyadic
+// isolating pieces, and exact signs of other polynomials at them.
+//
+// Guarantee: exact. A root is either exactly a dyadic point or the only root of its
+// square-free polynomial in the open piece (a / 2^k, (a + 1) / 2^k), at whose ends that
+// polynomial is non-zero with opposite signs. Isolation subdivides [0, 1] and counts the
+// sign changes of Bernstein coefficients (Descartes' rule of signs); signs at a root come
+// from a polynomial's Bernstein coefficients on the root's piece once they agree, and are
+// zero exactly when the gcd with the root's polynomial vanishes inside the piece.
+#pragma once
+
+#include <vector>
+
+#include "exact/integer_polynomial.hpp"
+
+namespace sscc::ccd::exact_stage {
+
+struct DyadicRoot {
+  IntegerPolynomial polynomial;  ///< square-free
+  Dyadic start;                  ///< the root itself when exact, else its piece's start
+  bool exact = false;
+  int sign_at_start = 0;         ///< of `polynomial`, when not exact (never 0)
+  /// `polynomial` on the piece, when not exact: narrowing splits it (additions and shifts)
+  /// rather than evaluating at the midpoint (products of long integers).
+  Bernstein on_piece;
+};
+
+/// The distinct real roots of p in the closed interval [0, 1], in increasing order.
+/// Precondition: p is not the zero polynomial.
+std::vector<DyadicRoot> roots_in_unit_interval(const IntegerPolynomial& p);
+
+/// A root exactly at a / 2^k.
+DyadicRoot exact_root(const Dyadic& x);
+
+/// Halves the root's piece (or finds it exactly at the midpoint).
+void bisect(DyadicRoot& root);
+
+/// Exact sign (-1, 0, +1) of g at the root; narrows the root's piece as needed.
+int sign_at_root(const IntegerPolynomial& g, DyadicRoot& root);
+
+/// Sign of (a - b); narrows both pieces as needed.
+int compare(DyadicRoot& a, DyadicRoot& b);
+
+/// A double at most the root and within `width` of it (width >= 2^-52); narrows the piece.
+double lower_bound_within(DyadicRoot& root, double width);
+
+}  // namespace sscc::ccd::exact_stage
