@@ -43,7 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::memcpy(&parameters.max_subdivision_depth, data + 16, 4);
   std::memcpy(&parameters.max_evaluations_per_pair, data + 20, 4);
   std::string file("SSCCCERT", 8);
-  append(file, std::uint32_t{1});
+  append(file, std::uint32_t{2});  // the format version the library reads
   append(file, std::uint32_t{0x01020304});
   append(file, sscc::Certificates::key_of(model_bvh(), parameters));
   file.append(reinterpret_cast<const char*>(data), size);

@@ -16,7 +16,9 @@ namespace sscc {
 namespace {
 
 constexpr char kMagic[8] = {'S', 'S', 'C', 'C', 'C', 'E', 'R', 'T'};
-constexpr std::uint32_t kFormatVersion = 1;
+// 2: the pair bounds pad the rounding of the positions a query computes; files of version 1
+// were computed without it and are refused (recompute them).
+constexpr std::uint32_t kFormatVersion = 2;
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 
 class Writer {

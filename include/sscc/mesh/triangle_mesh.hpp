@@ -40,8 +40,13 @@ class TriangleMesh {
   bool adjacent(int a, int b) const {
     const Triangle& x = triangles_[a];
     const Triangle& y = triangles_[b];
-    return ((x[0] == y[0]) | (x[0] == y[1]) | (x[0] == y[2])) | ((x[1] == y[0]) | (x[1] == y[1]) | (x[1] == y[2])) |
-           ((x[2] == y[0]) | (x[2] == y[1]) | (x[2] == y[2]));
+    // Nine comparisons or-ed bitwise, without branches: the traversal asks this for every
+    // triangle pair it meets, and the answer is rarely known before the last comparison.
+    int shared = 0;
+    for (int i = 0; i < 3; ++i) {
+      shared |= static_cast<int>(x[i] == y[0]) | static_cast<int>(x[i] == y[1]) | static_cast<int>(x[i] == y[2]);
+    }
+    return shared != 0;
   }
   /// The rest positions' bounding box (empty for no vertices).
   Aabb bounding_box() const;
