@@ -15,8 +15,10 @@ namespace {
 
 const sscc::SubspaceBvh& model_bvh() {
   static const auto bvh = [] {
-    const sscc::TriangleMesh mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, {{0, 1, 2}, {3, 4, 5}});
-    return std::make_unique<sscc::SubspaceBvh>(sscc::SubspaceModel(mesh, sscc::polynomial_basis(mesh, 3), Eigen::VectorXd::Ones(3)));
+    const sscc::TriangleMesh mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
+                                  {{0, 1, 2}, {3, 4, 5}});
+    return std::make_unique<sscc::SubspaceBvh>(
+        sscc::SubspaceModel(mesh, sscc::polynomial_basis(mesh, 3), Eigen::VectorXd::Ones(3)));
   }();
   return *bvh;
 }

@@ -14,8 +14,8 @@ namespace sscc::fuzz {
 /// Writes `data` to a scratch file ending in `extension` (".off", ".U", ...) and returns its path.
 inline std::string scratch_file(const std::uint8_t* data, std::size_t size, const std::string& extension) {
   const std::string path = "/tmp/sscc_fuzz_" + std::to_string(getpid()) + extension;
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data),
-                                                                 static_cast<std::streamsize>(size));
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   return path;
 }
 

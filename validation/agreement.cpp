@@ -12,8 +12,7 @@ double distance_at(const Query& q, double t, const double params[2]) {
   Eigen::Vector3d x[4];
   for (int i = 0; i < 4; ++i) x[i] = (1.0 - t) * q.points[i] + t * q.points[i + 4];
   if (q.kind == Kind::kVertexFace) {
-    const Eigen::Vector3d on_face =
-        (1.0 - params[0] - params[1]) * x[1] + params[0] * x[2] + params[1] * x[3];
+    const Eigen::Vector3d on_face = (1.0 - params[0] - params[1]) * x[1] + params[0] * x[2] + params[1] * x[3];
     return (x[0] - on_face).norm();
   }
   const Eigen::Vector3d on_a = x[0] + params[0] * (x[1] - x[0]);
@@ -51,8 +50,7 @@ std::string describe(const Query& q) {
   return out;
 }
 
-std::string disagreement_with_reference(const Query& q, const ccd::CcdOptions& options,
-                                        bool* reference_contact) {
+std::string disagreement_with_reference(const Query& q, const ccd::CcdOptions& options, bool* reference_contact) {
   const ccd::CcdResult kernel = run_kernel(q, options);
   exact::ContactTime truth = run_reference(q);
   if (reference_contact) *reference_contact = truth.has_value();

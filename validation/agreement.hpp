@@ -12,8 +12,7 @@ namespace sscc::validation {
 /// reported parameters, are no farther apart than the motion allows in that time.
 /// Otherwise a one-line description of the disagreement with the query's coordinates.
 /// `truth`, when given, receives the reference's contact decision.
-std::string disagreement_with_reference(const Query& q, const ccd::CcdOptions& options = {},
-                                        bool* truth = nullptr);
+std::string disagreement_with_reference(const Query& q, const ccd::CcdOptions& options = {}, bool* truth = nullptr);
 
 /// The query as text with full-precision coordinates (for reports and failing tests).
 std::string describe(const Query& q);

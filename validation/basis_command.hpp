@@ -22,9 +22,9 @@ struct BasisCommandOptions {
   std::string method = "modal";  ///< modal, polynomial, stiffness (of input_basis) or pca
   ElasticBasisOptions elastic;   ///< material, volume mesh, modes
   PolynomialScaling scaling = PolynomialScaling::kStiffness;
-  std::string input_basis;       ///< method stiffness: the basis to scale
-  std::string output;            ///< the .U file
-  std::string weights_output;    ///< "" means output with its extension replaced by .weights
+  std::string input_basis;         ///< method stiffness: the basis to scale
+  std::string output;              ///< the .U file
+  std::string weights_output;      ///< "" means output with its extension replaced by .weights
   std::vector<std::string> poses;  ///< method pca: example pose files or directories of them
   PcaOptions pca;                  ///< method pca: modes or explained-variance fraction
   std::string mean_output;         ///< method pca: "" means output with its extension replaced by .mean.off

@@ -6,9 +6,8 @@
 
 namespace sscc::validation {
 
-double triangle_pair_first_contact(const std::vector<Eigen::Vector3d>& x0,
-                                   const std::vector<Eigen::Vector3d>& x1, const Triangle& a,
-                                   const Triangle& b, const ccd::CcdOptions& options) {
+double triangle_pair_first_contact(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
+                                   const Triangle& a, const Triangle& b, const ccd::CcdOptions& options) {
   double earliest = 2.0;
   const auto consider = [&](const ccd::CcdResult& r) {
     if (r.hit) earliest = std::min(earliest, r.toi);

@@ -14,8 +14,7 @@ namespace sscc::validation {
 
 /// Earliest time of impact of any feature of triangles a and b between positions x0 and
 /// x1, or 2 when none touches (comes within options.minimum_separation).
-double triangle_pair_first_contact(const std::vector<Eigen::Vector3d>& x0,
-                                   const std::vector<Eigen::Vector3d>& x1, const Triangle& a,
-                                   const Triangle& b, const ccd::CcdOptions& options = {});
+double triangle_pair_first_contact(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
+                                   const Triangle& a, const Triangle& b, const ccd::CcdOptions& options = {});
 
 }  // namespace sscc::validation

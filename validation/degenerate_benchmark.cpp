@@ -44,16 +44,15 @@ TimeDistribution distribution_of(std::vector<double> t) {
   return d;
 }
 
-std::vector<DegenerateSetTiming> run_degenerate_benchmark(long queries, std::uint64_t seed,
-                                                          std::ostream& out, std::ostream& progress) {
+std::vector<DegenerateSetTiming> run_degenerate_benchmark(long queries, std::uint64_t seed, std::ostream& out,
+                                                          std::ostream& progress) {
   const std::array<Set, 3> sets = {Set{"near-degenerate", near_degenerate_query}, Set{"integer-grid", grid},
                                    Set{"resting-contact", resting_contact_query}};
   std::vector<DegenerateSetTiming> timings;
   std::mt19937_64 rng(seed);
   for (const Set& set : sets) {
     for (Kind kind : {Kind::kVertexFace, Kind::kEdgeEdge}) {
-      progress << "degenerate benchmark: " << set.name << " " << to_string(kind) << " (" << queries
-               << " queries)\n";
+      progress << "degenerate benchmark: " << set.name << " " << to_string(kind) << " (" << queries << " queries)\n";
       std::vector<Query> qs;
       for (long i = 0; i < queries; ++i) qs.push_back(set.generate(kind, rng));
       DegenerateSetTiming timing{set.name, kind, queries, {}, -1.0, 0};
@@ -87,8 +86,8 @@ std::vector<DegenerateSetTiming> run_degenerate_benchmark(long queries, std::uin
         const TimeDistribution d = distribution_of(by_stage[s]);
         std::snprintf(line, sizeof line,
                       "degenerate %s %s stage %s: queries=%zu median_us=%.3f mean_us=%.3f p99_us=%.3f max_us=%.1f",
-                      set.name, to_string(kind), ccd::to_string(static_cast<ccd::DecidedBy>(s)),
-                      by_stage[s].size(), d.median_us, d.mean_us, d.p99_us, d.max_us);
+                      set.name, to_string(kind), ccd::to_string(static_cast<ccd::DecidedBy>(s)), by_stage[s].size(),
+                      d.median_us, d.mean_us, d.p99_us, d.max_us);
         out << line << '\n';
       }
       timings.push_back(timing);

@@ -30,7 +30,7 @@ struct DegenerateSetTiming {
 
 /// `queries` of each set and kind, seeded; prints one line per set, kind and stage to
 /// `out`. Returns the timings (bench tables use them).
-std::vector<DegenerateSetTiming> run_degenerate_benchmark(long queries, std::uint64_t seed,
-                                                          std::ostream& out, std::ostream& progress);
+std::vector<DegenerateSetTiming> run_degenerate_benchmark(long queries, std::uint64_t seed, std::ostream& out,
+                                                          std::ostream& progress);
 
 }  // namespace sscc::validation

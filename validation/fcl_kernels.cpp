@@ -24,9 +24,7 @@ bool run_fcl(const Query& q) {
 #else
 bool fcl_available() { return false; }
 
-bool run_fcl(const Query&) {
-  throw std::logic_error("sscc was built without FCL (SSCC_WITH_FCL=OFF)");
-}
+bool run_fcl(const Query&) { throw std::logic_error("sscc was built without FCL (SSCC_WITH_FCL=OFF)"); }
 #endif
 
 }  // namespace sscc::validation

@@ -4,9 +4,9 @@
 #include <stdexcept>
 
 #if SSCC_WITH_FCL
-#include <fcl/math/bv/utility.h>
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/AABB.h>
+#include <fcl/math/bv/utility.h>
 #include <fcl/narrowphase/detail/traversal/collision/mesh_continuous_collision_traversal_node.h>
 #include <fcl/narrowphase/detail/traversal/collision_node.h>
 #endif
@@ -63,8 +63,8 @@ std::vector<std::pair<int, int>> FclSelfCcd::step(const std::vector<Eigen::Vecto
   }
   NonAdjacentNode node;
   fcl::CollisionRequest<double> request(1000000);
-  fcl::detail::initialize(node, m, fcl::Transform3<double>::Identity(), m,
-                          fcl::Transform3<double>::Identity(), request);
+  fcl::detail::initialize(node, m, fcl::Transform3<double>::Identity(), m, fcl::Transform3<double>::Identity(),
+                          request);
   fcl::detail::selfCollide(&node, nullptr);
   std::vector<std::pair<int, int>> pairs;
   for (const auto& p : node.pairs) pairs.emplace_back(std::min(p.id1, p.id2), std::max(p.id1, p.id2));

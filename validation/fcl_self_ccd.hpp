@@ -18,8 +18,7 @@ class FclSelfCcd {
   ~FclSelfCcd();
   /// Colliding non-adjacent triangle pairs (first < second, sorted) between the positions
   /// x0 (start of step) and x1 (end).
-  std::vector<std::pair<int, int>> step(const std::vector<Eigen::Vector3d>& x0,
-                                        const std::vector<Eigen::Vector3d>& x1);
+  std::vector<std::pair<int, int>> step(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1);
 
  private:
   struct Impl;

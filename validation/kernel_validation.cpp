@@ -45,18 +45,16 @@ struct Tally {
   }
 };
 
-void print_tally(std::ostream& out, const std::string& method, Kind kind,
-                 const std::string& label, const Tally& t) {
+void print_tally(std::ostream& out, const std::string& method, Kind kind, const std::string& label, const Tally& t) {
   char line[256];
-  std::snprintf(line, sizeof line, "%s %s %s: queries=%ld positives=%ld fn=%ld fp=%ld mean_us=%.3f",
-                method.c_str(), to_string(kind), label.c_str(), t.queries, t.positives,
-                t.false_negatives, t.false_positives, t.mean_us);
+  std::snprintf(line, sizeof line, "%s %s %s: queries=%ld positives=%ld fn=%ld fp=%ld mean_us=%.3f", method.c_str(),
+                to_string(kind), label.c_str(), t.queries, t.positives, t.false_negatives, t.false_positives,
+                t.mean_us);
   out << line << '\n';
 }
 
 /// Median over repeats of the mean time per query of `answer` on `queries`, in us.
-double median_mean_us(const std::vector<Query>& queries, const std::function<bool(const Query&)>& answer,
-                      int repeats) {
+double median_mean_us(const std::vector<Query>& queries, const std::function<bool(const Query&)>& answer, int repeats) {
   std::vector<double> means;
   volatile long sink = 0;
   for (int r = 0; r < std::max(1, repeats); ++r) {
@@ -80,16 +78,15 @@ struct Methods {
   }
 };
 
-long report_query_set(const KernelValidationOptions& options, std::ostream& out,
-                      std::ostream& progress) {
+long report_query_set(const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
   const std::vector<QueryFile> files = read_query_set(options.queries_dir);
   const Methods methods;
   std::map<std::pair<std::string, Kind>, Tally> totals;
   std::map<std::pair<std::string, Kind>, double> total_seconds;
   long problems = 0;
   for (const QueryFile& file : files) {
-    progress << "query set: " << file.scene << " " << to_string(file.kind) << " ("
-             << file.queries.size() << " queries)\n";
+    progress << "query set: " << file.scene << " " << to_string(file.kind) << " (" << file.queries.size()
+             << " queries)\n";
     std::vector<Query> queries;
     std::vector<bool> truth;
     for (const auto& labelled : file.queries) {
@@ -130,10 +127,8 @@ long report_query_set(const KernelValidationOptions& options, std::ostream& out,
 
 /// Random or near-degenerate queries: each method against the exact reference.
 long report_generated(const std::string& label, Kind kind, const std::vector<Query>& queries,
-                      const KernelValidationOptions& options, std::ostream& out,
-                      std::ostream& progress) {
-  progress << label << " " << to_string(kind) << ": " << queries.size()
-           << " queries against the exact reference\n";
+                      const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
+  progress << label << " " << to_string(kind) << ": " << queries.size() << " queries against the exact reference\n";
   std::vector<bool> truth;
   long disagreements = 0;
   std::array<long, ccd::kDecidedByCount> stages{};
@@ -164,10 +159,20 @@ void write_plots(const std::string& dir, std::ostream& progress) {
   const std::string tolerance = dir + "/toi_tolerance.csv";
   const std::string separation = dir + "/separation.csv";
   Figure figure{dir + "/kernels_time_vs_error.png", 1100, 450, {}};
-  figure.panels.push_back({"Time of impact: cost against tolerance", "toi tolerance", "mean time per query (us)", "",
-                           true, false, "top left",
+  figure.panels.push_back({"Time of impact: cost against tolerance",
+                           "toi tolerance",
+                           "mean time per query (us)",
+                           "",
+                           true,
+                           false,
+                           "top left",
                            {{tolerance, 1, "2", "vertex-face"}, {tolerance, 1, "3", "edge-edge"}}});
-  figure.panels.push_back({"Minimum separation d: positives beyond touching", "d", "queries", "", true, false,
+  figure.panels.push_back({"Minimum separation d: positives beyond touching",
+                           "d",
+                           "queries",
+                           "",
+                           true,
+                           false,
                            "top left",
                            {{separation, 1, "3", "positives"},
                             {separation, 1, "4", "touching (exact, d = 0)"},
@@ -188,8 +193,7 @@ std::vector<ToleranceTiming> toi_tolerance_sweep(const std::vector<Query>& vf, c
 }
 
 void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Query>& ee,
-                              const KernelValidationOptions& options, std::ostream& out,
-                              std::ostream& progress) {
+                              const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
   std::filesystem::create_directories(options.output_dir);
   progress << "sweep: time of impact tolerance 1e-2 .. 1e-12\n";
   std::ofstream toi(options.output_dir + "/toi_tolerance.csv");
@@ -197,8 +201,8 @@ void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Qu
   for (const ToleranceTiming& t : toi_tolerance_sweep(vf, ee, options.repeats)) {
     toi << t.tolerance << ',' << t.vertex_face_us << ',' << t.edge_edge_us << '\n';
     char line[160];
-    std::snprintf(line, sizeof line, "toi-tolerance %.0e: vertex-face mean_us=%.3f edge-edge mean_us=%.3f",
-                  t.tolerance, t.vertex_face_us, t.edge_edge_us);
+    std::snprintf(line, sizeof line, "toi-tolerance %.0e: vertex-face mean_us=%.3f edge-edge mean_us=%.3f", t.tolerance,
+                  t.vertex_face_us, t.edge_edge_us);
     out << line << '\n';
   }
   progress << "sweep: minimum separation d (sampled distances for confirmation)\n";
@@ -229,8 +233,8 @@ void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Qu
     const auto answer = [&](const Query& q) { return run_kernel(q, o).hit; };
     const double us = median_mean_us(sample, answer, 1);
     const long not_confirmed = positives - touch - confirmed;
-    sep << d << ',' << sample.size() << ',' << positives << ',' << touch << ',' << confirmed << ','
-        << not_confirmed << ',' << us << '\n';
+    sep << d << ',' << sample.size() << ',' << positives << ',' << touch << ',' << confirmed << ',' << not_confirmed
+        << ',' << us << '\n';
     char line[200];
     std::snprintf(line, sizeof line,
                   "separation d=%.0e: queries=%zu positives=%ld touching=%ld confirmed_within_d=%ld "
@@ -243,8 +247,7 @@ void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Qu
   write_plots(options.output_dir, progress);
 }
 
-long report_random(const KernelValidationOptions& options, std::ostream& out,
-                   std::ostream& progress) {
+long report_random(const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
   std::mt19937_64 rng(options.seed);
   std::vector<Query> random[2];
   std::vector<Query> degenerate[2];
@@ -260,13 +263,13 @@ long report_random(const KernelValidationOptions& options, std::ostream& out,
     problems += report_generated("random", kinds[k], random[k], options, out, progress);
     problems += report_generated("near-degenerate", kinds[k], degenerate[k], options, out, progress);
   }
-  for (const DegenerateSetTiming& t : run_degenerate_benchmark(std::max(1L, options.random / 10), options.seed,
-                                                                out, progress)) {
+  for (const DegenerateSetTiming& t :
+       run_degenerate_benchmark(std::max(1L, options.random / 10), options.seed, out, progress)) {
     problems += t.disagreements;
   }
   const std::size_t n = std::min<std::size_t>(100000, random[0].size());
-  sweep_time_against_error({random[0].begin(), random[0].begin() + n},
-                           {random[1].begin(), random[1].begin() + n}, options, out, progress);
+  sweep_time_against_error({random[0].begin(), random[0].begin() + n}, {random[1].begin(), random[1].begin() + n},
+                           options, out, progress);
   return problems;
 }
 
@@ -280,8 +283,7 @@ std::vector<ToleranceTiming> time_against_toi_tolerance(long queries, std::uint6
   return toi_tolerance_sweep(vf, ee, repeats);
 }
 
-long run_kernel_validation(const KernelValidationOptions& options, std::ostream& out,
-                           std::ostream& progress) {
+long run_kernel_validation(const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
   if (!fcl_available()) progress << "note: built without FCL; only sscc lines are printed\n";
   long problems = 0;
   if (!options.queries_dir.empty()) problems += report_query_set(options, out, progress);

@@ -38,7 +38,6 @@ std::vector<ToleranceTiming> time_against_toi_tolerance(long queries, std::uint6
 
 /// Prints the report lines to `out` and progress to `progress`. Returns the number of
 /// disagreements with the ground truth or the exact reference (0 when all is well).
-long run_kernel_validation(const KernelValidationOptions& options, std::ostream& out,
-                           std::ostream& progress);
+long run_kernel_validation(const KernelValidationOptions& options, std::ostream& out, std::ostream& progress);
 
 }  // namespace sscc::validation

@@ -29,7 +29,8 @@ std::vector<std::string> example_pose_files(const std::vector<std::string>& item
     for (const auto& entry : std::filesystem::directory_iterator(item)) {
       if (entry.is_regular_file() && is_mesh_file(entry.path())) found.push_back(entry.path().string());
     }
-    if (found.empty()) throw std::invalid_argument("example poses: directory " + item + " holds no .off, .obj or .ply file");
+    if (found.empty())
+      throw std::invalid_argument("example poses: directory " + item + " holds no .off, .obj or .ply file");
     std::sort(found.begin(), found.end());
     files.insert(files.end(), found.begin(), found.end());
   }

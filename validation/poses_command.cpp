@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "sscc/mesh/mesh_io.hpp"
 #include "sscc/experimental/cull_validation.hpp"
 #include "sscc/experimental/node_collisions.hpp"
+#include "sscc/mesh/mesh_io.hpp"
 #include "sscc/query/pose_step_ccd.hpp"
 
 namespace sscc::validation {

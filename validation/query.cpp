@@ -7,9 +7,7 @@
 
 namespace sscc::validation {
 
-const char* to_string(Kind kind) {
-  return kind == Kind::kVertexFace ? "vertex-face" : "edge-edge";
-}
+const char* to_string(Kind kind) { return kind == Kind::kVertexFace ? "vertex-face" : "edge-edge"; }
 
 ccd::CcdResult run_kernel(const Query& q, const ccd::CcdOptions& options) {
   const auto& p = q.points;

@@ -11,12 +11,9 @@ using Eigen::Vector3d;
 double uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
-int integer(std::mt19937_64& rng, int lo, int hi) {
-  return std::uniform_int_distribution<int>(lo, hi)(rng);
-}
+int integer(std::mt19937_64& rng, int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
 Vector3d grid_point(std::mt19937_64& rng, int range) {
-  return Vector3d(integer(rng, -range, range), integer(rng, -range, range),
-                  integer(rng, -range, range));
+  return Vector3d(integer(rng, -range, range), integer(rng, -range, range), integer(rng, -range, range));
 }
 double quarter(std::mt19937_64& rng) { return integer(rng, 0, 4) / 4.0; }
 
@@ -45,8 +42,7 @@ Query built_contact(Kind kind, std::mt19937_64& rng) {
     at[0] = grid_point(rng, 4);
     at[1] = grid_point(rng, 4);
     const Vector3d x = at[0] + quarter(rng) * (at[1] - at[0]);
-    const Vector3d d = integer(rng, 0, 3) == 0 ? Vector3d(integer(rng, -2, 2) * (at[1] - at[0]))
-                                               : grid_point(rng, 3);
+    const Vector3d d = integer(rng, 0, 3) == 0 ? Vector3d(integer(rng, -2, 2) * (at[1] - at[0])) : grid_point(rng, 3);
     at[2] = x - quarter(rng) * d;
     at[3] = at[2] + d;
   }
@@ -96,8 +92,7 @@ Query random_query(Kind kind, std::mt19937_64& rng) {
   Query q{kind, {}};
   for (int i = 0; i < 4; ++i) {
     q.points[i] = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-    q.points[i + 4] =
-        q.points[i] + Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    q.points[i + 4] = q.points[i] + Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
   }
   return q;
 }

@@ -18,8 +18,7 @@ namespace {
   throw std::runtime_error(file.string() + ":" + std::to_string(line) + ": " + problem);
 }
 
-double exact_double(const std::string& num, const std::string& den, const fs::path& file,
-                    int line) {
+double exact_double(const std::string& num, const std::string& den, const fs::path& file, int line) {
   mpq_class value;
   if (value.set_str(num + "/" + den, 10) != 0) fail(file, line, "not a rational: " + num + "/" + den);
   if (sgn(value.get_den()) == 0) fail(file, line, "zero denominator");

@@ -8,11 +8,11 @@
 #include <memory>
 #include <stdexcept>
 
-#include "fcl_settle.hpp"
 #include "fcl_self_ccd.hpp"
+#include "fcl_settle.hpp"
 #include "sscc/query/self_ccd.hpp"
-#include "statistics.hpp"
 #include "sscc/threads.hpp"
+#include "statistics.hpp"
 #include "trajectory.hpp"
 
 namespace sscc::validation {
@@ -20,12 +20,12 @@ namespace sscc::validation {
 namespace {
 
 struct MethodRun {
-  std::vector<PairList> pairs;           // per step
-  std::vector<SelfCcdReport> reports;    // per step, sscc methods only
-  std::vector<double> milliseconds;      // per step
-  std::vector<double> one_thread_ms;     // per step, sscc and traditional on one thread
+  std::vector<PairList> pairs;                   // per step
+  std::vector<SelfCcdReport> reports;            // per step, sscc methods only
+  std::vector<double> milliseconds;              // per step
+  std::vector<double> one_thread_ms;             // per step, sscc and traditional on one thread
   double cpu_ms = 0.0, one_thread_cpu_ms = 0.0;  // process CPU time over all steps, each thread count
-  int identical_one_thread = 0;          // steps whose one-thread report is the same
+  int identical_one_thread = 0;                  // steps whose one-thread report is the same
 };
 
 PairList pair_list(const SelfCcdReport& report) {
@@ -48,8 +48,8 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   const SubspaceModel model = load_model(o.model, progress);
   const SubspaceBvh bvh(model);
   const BvhBuildStats& build = bvh.build_stats();
-  progress << "bvh: " << build.nodes << " nodes, " << build.leaves << " leaves, depth " << build.depth
-           << ", built in " << build.seconds << " s\n";
+  progress << "bvh: " << build.nodes << " nodes, " << build.leaves << " leaves, depth " << build.depth << ", built in "
+           << build.seconds << " s\n";
   std::unique_ptr<Certificates> certificates;
   if (!o.certificates.empty()) {
     certificates = std::make_unique<Certificates>(Certificates::read(o.certificates, bvh));
@@ -93,8 +93,7 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       } else {
         throw std::invalid_argument("unknown method '" + method + "' (sscc, cones, traditional, exhaustive, fcl)");
       }
-      run.milliseconds.push_back(
-          1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      run.milliseconds.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       run.cpu_ms += process_cpu_ms() - cpu_start;
       if (threads > 1 && (method == "sscc" || method == "traditional")) {  // the same step on one thread
         const auto serial_start = std::chrono::steady_clock::now();
@@ -130,20 +129,22 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
         triangle_pairs += static_cast<double>(report.stats.triangle_pairs) / o.steps;
         cone_culled += static_cast<double>(report.stats.cone_culled) / o.steps;
       }
-      std::snprintf(line, sizeof line, " node_tests_per_step=%.0f triangle_pairs_per_step=%.0f cone_culls_per_step=%.0f",
-                    node_tests, triangle_pairs, cone_culled);
+      std::snprintf(line, sizeof line,
+                    " node_tests_per_step=%.0f triangle_pairs_per_step=%.0f cone_culls_per_step=%.0f", node_tests,
+                    triangle_pairs, cone_culled);
       out << line;
     }
     out << '\n';
     if (!run.one_thread_ms.empty()) {
       double one = 0.0;
       for (double ms : run.one_thread_ms) one += ms / o.steps;
-      std::snprintf(line, sizeof line,
-                    "%s threads: one_thread_mean_ms=%.3f threads=%d mean_ms=%.3f speedup=%.2f one_thread_median_ms=%.3f "
-                    "median_ms=%.3f identical_steps=%d/%d one_thread_cpu_ms=%.3f cpu_ms=%.3f",
-                    method.c_str(), one, threads, mean, one / std::max(mean, 1e-9), median(run.one_thread_ms),
-                    median(run.milliseconds), run.identical_one_thread, o.steps, run.one_thread_cpu_ms / o.steps,
-                    run.cpu_ms / o.steps);
+      std::snprintf(
+          line, sizeof line,
+          "%s threads: one_thread_mean_ms=%.3f threads=%d mean_ms=%.3f speedup=%.2f one_thread_median_ms=%.3f "
+          "median_ms=%.3f identical_steps=%d/%d one_thread_cpu_ms=%.3f cpu_ms=%.3f",
+          method.c_str(), one, threads, mean, one / std::max(mean, 1e-9), median(run.one_thread_ms),
+          median(run.milliseconds), run.identical_one_thread, o.steps, run.one_thread_cpu_ms / o.steps,
+          run.cpu_ms / o.steps);
       out << line << '\n';
     }
   }
@@ -169,15 +170,16 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   if (runs.count("sscc")) {
     // The cost of a step the root certificate decides, timed over many repeats of one.
     const std::vector<SelfCcdReport>& reports = runs["sscc"].reports;
-    const auto certified = std::find_if(reports.begin(), reports.end(),
-                                        [](const SelfCcdReport& r) { return r.stats.root_certified; });
+    const auto certified =
+        std::find_if(reports.begin(), reports.end(), [](const SelfCcdReport& r) { return r.stats.root_certified; });
     if (certified != reports.end()) {
       const std::size_t k = static_cast<std::size_t>(certified - reports.begin());
       constexpr int kRepeats = 100000;
       long collided = 0;
       const auto start = std::chrono::steady_clock::now();
       for (int i = 0; i < kRepeats; ++i) collided += ccd.query(q[k], q[k + 1]).collided();
-      const double us = 1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kRepeats;
+      const double us =
+          1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kRepeats;
       char line[160];
       std::snprintf(line, sizeof line, "sscc certified step: mean_us=%.3f (one root-certified step, %d repeats)", us,
                     kRepeats);
@@ -223,8 +225,9 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       int identical = 0;
       SettledDisagreements settled;
       for (int k = 0; k < o.steps; ++k) {
-        const bool same = full ? a.reports[k].pairs == b.reports[k].pairs && a.reports[k].features == b.reports[k].features
-                               : a.pairs[k] == b.pairs[k];
+        const bool same =
+            full ? a.reports[k].pairs == b.reports[k].pairs && a.reports[k].features == b.reports[k].features
+                 : a.pairs[k] == b.pairs[k];
         identical += same;
         if (same) continue;
         if (full) {
@@ -233,9 +236,9 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
         }
         // One side is FCL: the exact kernels decide each pair the two disagree on.
         const bool a_is_fcl = o.methods[i] == "fcl";
-        settled += settle_with_exact_kernels(model.mesh(), model.deformed_positions(q[k]),
-                                             model.deformed_positions(q[k + 1]), a_is_fcl ? a.pairs[k] : b.pairs[k],
-                                             a_is_fcl ? b.pairs[k] : a.pairs[k]);
+        settled +=
+            settle_with_exact_kernels(model.mesh(), model.deformed_positions(q[k]), model.deformed_positions(q[k + 1]),
+                                      a_is_fcl ? a.pairs[k] : b.pairs[k], a_is_fcl ? b.pairs[k] : a.pairs[k]);
       }
       out << "agreement " << o.methods[i] << " vs " << o.methods[j] << ": identical_steps=" << identical << "/"
           << o.steps << '\n';

@@ -57,9 +57,15 @@ void mutate(Query& q, std::mt19937_64& rng, int range) {
       x = std::ldexp(rng() & 1 ? 1.0 : -1.0, std::uniform_int_distribution<int>(-limit, std::min(limit, 1023))(rng));
       break;
     }
-    case 2: x = std::uniform_int_distribution<int>(-2, 2)(rng); break;
-    case 3: x = coordinate(q, pick(rng)); break;
-    default: x = -x; break;
+    case 2:
+      x = std::uniform_int_distribution<int>(-2, 2)(rng);
+      break;
+    case 3:
+      x = coordinate(q, pick(rng));
+      break;
+    default:
+      x = -x;
+      break;
   }
   x = within_range(x, range);
 }
@@ -76,23 +82,25 @@ SlowQuery search_slow_query(Kind kind, const SlowQuerySearchOptions& options, st
     for (int c = 0; c < changes; ++c) mutate(candidate, rng, options.exponent_range);
     const double us = kernel_us(candidate);
     if (us > best.us) best = {candidate, us, true};
-    if ((i + 1) % 500 == 0) progress << "  slow-query search " << to_string(kind) << ": " << (i + 1) << " steps, slowest " << best.us << " us\n";
+    if ((i + 1) % 500 == 0)
+      progress << "  slow-query search " << to_string(kind) << ": " << (i + 1) << " steps, slowest " << best.us
+               << " us\n";
   }
   best.us = kernel_us(best.query);  // re-timed, away from the search's noise
   best.agrees = disagreement_with_reference(best.query).empty();
   return best;
 }
 
-long report_slow_query_search(const SlowQuerySearchOptions& options, std::ostream& out,
-                              std::ostream& progress) {
+long report_slow_query_search(const SlowQuerySearchOptions& options, std::ostream& out, std::ostream& progress) {
   long disagreements = 0;
   for (Kind kind : {Kind::kVertexFace, Kind::kEdgeEdge}) {
-    progress << "slow-query search " << to_string(kind) << ": " << options.iterations
-             << " steps, exponents within +-" << options.exponent_range << "\n";
+    progress << "slow-query search " << to_string(kind) << ": " << options.iterations << " steps, exponents within +-"
+             << options.exponent_range << "\n";
     const SlowQuery q = search_slow_query(kind, options, progress);
     char line[160];
-    std::snprintf(line, sizeof line, "slowest %s (exponents within +-%d, %ld steps): us=%.1f agrees=%s: ",
-                  to_string(kind), options.exponent_range, options.iterations, q.us, q.agrees ? "yes" : "NO");
+    std::snprintf(line, sizeof line,
+                  "slowest %s (exponents within +-%d, %ld steps): us=%.1f agrees=%s: ", to_string(kind),
+                  options.exponent_range, options.iterations, q.us, q.agrees ? "yes" : "NO");
     out << line << describe(q.query) << '\n';
     disagreements += q.agrees ? 0 : 1;
   }

@@ -21,15 +21,14 @@ struct SlowQuerySearchOptions {
 
 struct SlowQuery {
   Query query;
-  double us = 0.0;           ///< the kernel's time on it (best of 3)
-  bool agrees = true;        ///< with the exact reference
+  double us = 0.0;     ///< the kernel's time on it (best of 3)
+  bool agrees = true;  ///< with the exact reference
 };
 
 /// One search per kind; prints the slowest query of each to `out`.
 SlowQuery search_slow_query(Kind kind, const SlowQuerySearchOptions& options, std::ostream& progress);
 
 /// Both kinds; prints a line per kind to `out`. Returns the number of disagreements.
-long report_slow_query_search(const SlowQuerySearchOptions& options, std::ostream& out,
-                              std::ostream& progress);
+long report_slow_query_search(const SlowQuerySearchOptions& options, std::ostream& out, std::ostream& progress);
 
 }  // namespace sscc::validation

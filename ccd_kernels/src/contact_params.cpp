@@ -59,8 +59,7 @@ double golden_minimum(const Convex& f, std::initializer_list<double> also_try) {
 /// A needle or sliver triangle: from the vertex opposite its shortest edge it is the union
 /// over s of the segments [apex + s (q - apex), apex + s (r - apex)], and the distance to
 /// that segment is convex in s (a partial minimum of a convex function over a convex set).
-void sliver_params(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c,
-                   double params[2]) {
+void sliver_params(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c, double params[2]) {
   const Vector3d* x[3] = {&a, &b, &c};
   const double opposite2[3] = {(c - b).squaredNorm(), (a - c).squaredNorm(), (b - a).squaredNorm()};
   const int apex = int(std::min_element(opposite2, opposite2 + 3) - opposite2);
@@ -87,8 +86,7 @@ void sliver_params(const Vector3d& p, const Vector3d& a, const Vector3d& b, cons
   params[1] = weight[2];
 }
 
-void triangle_params(const Vector3d& p, const Vector3d& a, const Vector3d& b,
-                     const Vector3d& c, double params[2]) {
+void triangle_params(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c, double params[2]) {
   // Candidates: the projection into the face (ill-conditioned when the triangle is nearly
   // degenerate) and the closest point on each edge; the nearest one wins.
   double best[2] = {0.0, 0.0};
@@ -126,8 +124,7 @@ void triangle_params(const Vector3d& p, const Vector3d& a, const Vector3d& b,
   params[1] = best[1];
 }
 
-void segment_params(const Vector3d& a0, const Vector3d& a1, const Vector3d& b0,
-                    const Vector3d& b1, double params[2]) {
+void segment_params(const Vector3d& a0, const Vector3d& a1, const Vector3d& b0, const Vector3d& b1, double params[2]) {
   const Vector3d da = a1 - a0;
   const Vector3d db = b1 - b0;
   const Vector3d w = a0 - b0;
@@ -157,8 +154,7 @@ void segment_params(const Vector3d& a0, const Vector3d& a1, const Vector3d& b0,
     const Vector3d p = a0 + s * da;
     return (p - (b0 + closest_on_segment(p, b0, b1) * db)).squaredNorm();
   };
-  params[0] = golden_minimum(distance, {0.0, 1.0, closest_on_segment(b0, a0, a1),
-                                        closest_on_segment(b1, a0, a1)});
+  params[0] = golden_minimum(distance, {0.0, 1.0, closest_on_segment(b0, a0, a1), closest_on_segment(b1, a0, a1)});
   params[1] = closest_on_segment(a0 + params[0] * da, b0, b1);
 }
 

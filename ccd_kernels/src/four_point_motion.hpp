@@ -26,8 +26,6 @@ struct FourPointMotion {
 };
 
 /// Number of 2D orientations per coordinate plane the inside test uses.
-inline int orientation_count(PrimitivePair pair) {
-  return pair == PrimitivePair::kVertexFace ? 3 : 4;
-}
+inline int orientation_count(PrimitivePair pair) { return pair == PrimitivePair::kVertexFace ? 3 : 4; }
 
 }  // namespace sscc::ccd

@@ -7,20 +7,25 @@
 #include <string>
 
 #include "contact_params.hpp"
-#include "sscc/ccd/moving_frame.hpp"
 #include "exact/projected_decider.hpp"
 #include "filter/coplanar_filter.hpp"
 #include "separation/separation_search.hpp"
+#include "sscc/ccd/moving_frame.hpp"
 
 namespace sscc::ccd {
 
 const char* to_string(DecidedBy stage) {
   switch (stage) {
-    case DecidedBy::kSweptBoxes: return "swept-boxes";
-    case DecidedBy::kCoplanaritySign: return "coplanarity-sign";
-    case DecidedBy::kIntervalFilter: return "interval-filter";
-    case DecidedBy::kExact: return "exact";
-    case DecidedBy::kSeparationSearch: return "separation-search";
+    case DecidedBy::kSweptBoxes:
+      return "swept-boxes";
+    case DecidedBy::kCoplanaritySign:
+      return "coplanarity-sign";
+    case DecidedBy::kIntervalFilter:
+      return "interval-filter";
+    case DecidedBy::kExact:
+      return "exact";
+    case DecidedBy::kSeparationSearch:
+      return "separation-search";
   }
   return "unknown";
 }
@@ -32,18 +37,15 @@ namespace {
 constexpr double kBoxGapSlack = 1.0 + 1e-12;
 
 const char* name_of(PrimitivePair pair) {
-  return pair == PrimitivePair::kVertexFace ? "sscc::ccd::vertex_face_ccd"
-                                            : "sscc::ccd::edge_edge_ccd";
+  return pair == PrimitivePair::kVertexFace ? "sscc::ccd::vertex_face_ccd" : "sscc::ccd::edge_edge_ccd";
 }
 
 void check_options(PrimitivePair pair, const CcdOptions& options) {
   if (!(options.minimum_separation >= 0.0) || !std::isfinite(options.minimum_separation)) {
-    throw std::invalid_argument(std::string(name_of(pair)) +
-                                ": minimum_separation must be finite and >= 0");
+    throw std::invalid_argument(std::string(name_of(pair)) + ": minimum_separation must be finite and >= 0");
   }
   if (!(options.toi_tolerance > 0.0) || !std::isfinite(options.toi_tolerance)) {
-    throw std::invalid_argument(std::string(name_of(pair)) +
-                                ": toi_tolerance must be finite and > 0");
+    throw std::invalid_argument(std::string(name_of(pair)) + ": toi_tolerance must be finite and > 0");
   }
 }
 
@@ -151,29 +153,21 @@ CcdResult decide(const FourPointMotion& motion, const CcdOptions& options) {
 
 }  // namespace
 
-CcdResult vertex_face_ccd(const Eigen::Vector3d& v_t0, const Eigen::Vector3d& f0_t0,
-                          const Eigen::Vector3d& f1_t0, const Eigen::Vector3d& f2_t0,
-                          const Eigen::Vector3d& v_t1, const Eigen::Vector3d& f0_t1,
-                          const Eigen::Vector3d& f1_t1, const Eigen::Vector3d& f2_t1,
-                          const CcdOptions& options) {
-  return decide({PrimitivePair::kVertexFace, {f0_t0, f1_t0, f2_t0, v_t0},
-                 {f0_t1, f1_t1, f2_t1, v_t1}},
+CcdResult vertex_face_ccd(const Eigen::Vector3d& v_t0, const Eigen::Vector3d& f0_t0, const Eigen::Vector3d& f1_t0,
+                          const Eigen::Vector3d& f2_t0, const Eigen::Vector3d& v_t1, const Eigen::Vector3d& f0_t1,
+                          const Eigen::Vector3d& f1_t1, const Eigen::Vector3d& f2_t1, const CcdOptions& options) {
+  return decide({PrimitivePair::kVertexFace, {f0_t0, f1_t0, f2_t0, v_t0}, {f0_t1, f1_t1, f2_t1, v_t1}}, options);
+}
+
+CcdResult edge_edge_ccd(const Eigen::Vector3d& ea0_t0, const Eigen::Vector3d& ea1_t0, const Eigen::Vector3d& eb0_t0,
+                        const Eigen::Vector3d& eb1_t0, const Eigen::Vector3d& ea0_t1, const Eigen::Vector3d& ea1_t1,
+                        const Eigen::Vector3d& eb0_t1, const Eigen::Vector3d& eb1_t1, const CcdOptions& options) {
+  return decide({PrimitivePair::kEdgeEdge, {ea0_t0, ea1_t0, eb0_t0, eb1_t0}, {ea0_t1, ea1_t1, eb0_t1, eb1_t1}},
                 options);
 }
 
-CcdResult edge_edge_ccd(const Eigen::Vector3d& ea0_t0, const Eigen::Vector3d& ea1_t0,
-                        const Eigen::Vector3d& eb0_t0, const Eigen::Vector3d& eb1_t0,
-                        const Eigen::Vector3d& ea0_t1, const Eigen::Vector3d& ea1_t1,
-                        const Eigen::Vector3d& eb0_t1, const Eigen::Vector3d& eb1_t1,
-                        const CcdOptions& options) {
-  return decide({PrimitivePair::kEdgeEdge, {ea0_t0, ea1_t0, eb0_t0, eb1_t0},
-                 {ea0_t1, ea1_t1, eb0_t1, eb1_t1}},
-                options);
-}
-
-bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
-                         const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
-                         const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {
+bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+                         const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {
   // Two closed triangles meet iff an edge of one meets the other (the boundary of their
   // convex intersection lies on their edges). An edge [p, q] meets a still triangle iff a
   // vertex moving from p to q touches it: an exact vertex-face query.

@@ -84,8 +84,8 @@ std::vector<std::array<int, 3>> index_triples_from(py::handle object, const char
     for (int k = 0; k < 3; ++k) {
       const long long index = a(i, k);
       if (index < std::numeric_limits<int>::min() || index > std::numeric_limits<int>::max()) {
-        throw py::value_error(std::string(name) + ": index " + std::to_string(index) + " in row " +
-                              std::to_string(i) + " does not fit a 32-bit int");
+        throw py::value_error(std::string(name) + ": index " + std::to_string(index) + " in row " + std::to_string(i) +
+                              " does not fit a 32-bit int");
       }
       triples[i][k] = static_cast<int>(index);
     }

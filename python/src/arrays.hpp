@@ -65,8 +65,8 @@ template <typename T, typename Container>
 py::array adopt(Container&& container, std::vector<py::ssize_t> shape) {
   auto* owned = new Container(std::forward<Container>(container));
   py::capsule free_when_done(owned, [](void* p) { delete static_cast<Container*>(p); });
-  return py::array(py::dtype::of<T>(), std::move(shape), std::vector<py::ssize_t>{}, reinterpret_cast<const T*>(owned->data()),
-                   free_when_done);
+  return py::array(py::dtype::of<T>(), std::move(shape), std::vector<py::ssize_t>{},
+                   reinterpret_cast<const T*>(owned->data()), free_when_done);
 }
 
 }  // namespace sscc::python

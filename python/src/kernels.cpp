@@ -39,8 +39,8 @@ py::tuple run_many(Kernel kernel, py::object start_object, py::object end_object
   const CArray start = primitives_from(start_object, "start");
   const CArray end = primitives_from(end_object, "end");
   if (start.shape(0) != end.shape(0)) {
-    throw py::value_error("start and end: " + std::to_string(start.shape(0)) + " and " +
-                          std::to_string(end.shape(0)) + " queries");
+    throw py::value_error("start and end: " + std::to_string(start.shape(0)) + " and " + std::to_string(end.shape(0)) +
+                          " queries");
   }
   const py::ssize_t n = start.shape(0);
   py::array_t<bool> hit(n);
@@ -125,17 +125,17 @@ void bind_kernel(py::module_& m, const std::string& name, Kernel kernel, const s
       py::arg(points[5]), py::arg(points[6]), py::arg(points[7]), py::kw_only(),
       py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
       (doc + " Returns (hit, toi); toi is 1.0 without a hit." + kOptionsDoc).c_str());
-  m.def(
-      (name + "_many").c_str(),
-      [kernel](py::object start, py::object end, double toi_tolerance, double minimum_separation) {
-        return run_many(kernel, start, end, toi_tolerance, minimum_separation);
-      },
-      py::arg("start"), py::arg("end"), py::kw_only(), py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
-      py::arg("minimum_separation") = 0.0,
-      (many_doc + " at t = 0 and t = 1 (float64 in C order is read in place). Returns (hit, toi): (n,) bool "
-                  "and (n,) float64 arrays, toi 1.0 where there is no hit. The loop runs without the GIL." +
-       kOptionsDoc)
-          .c_str());
+  m.def((name + "_many").c_str(),
+        [kernel](py::object start, py::object end, double toi_tolerance, double minimum_separation) {
+          return run_many(kernel, start, end, toi_tolerance, minimum_separation);
+        },
+        py::arg("start"), py::arg("end"), py::kw_only(), py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
+        py::arg("minimum_separation") = 0.0,
+        (many_doc +
+         " at t = 0 and t = 1 (float64 in C order is read in place). Returns (hit, toi): (n,) bool "
+         "and (n,) float64 arrays, toi 1.0 where there is no hit. The loop runs without the GIL." +
+         kOptionsDoc)
+            .c_str());
 }
 
 }  // namespace

@@ -37,16 +37,13 @@ void bind_meshes(py::module_& m) {
            "indices). Raises ValueError for a non-finite coordinate, an index out of range or a triangle "
            "that repeats a vertex.")
       .def_property_readonly(
-          "vertices",
-          [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().vertices(), self); },
+          "vertices", [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().vertices(), self); },
           "The rest positions, (n, 3) float64, a read-only view (no copy).")
       .def_property_readonly(
-          "triangles",
-          [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().triangles(), self); },
+          "triangles", [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().triangles(), self); },
           "The triangles' vertex indices, (m, 3) int32, a read-only view (no copy).")
       .def_property_readonly(
-          "edges",
-          [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().edges(), self); },
+          "edges", [](py::object self) { return rows_view(self.cast<const TriangleMesh&>().edges(), self); },
           "The unique edges as sorted vertex pairs, (e, 2) int32, a read-only view. Edge-edge feature "
           "contacts index into these rows.")
       .def_property_readonly("vertex_count", &TriangleMesh::vertex_count, "Number of vertices.")

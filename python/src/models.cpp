@@ -191,8 +191,8 @@ void bind_models(py::module_& m) {
           "stats", [](const Certificates& c) { return precompute_stats_dict(c.stats()); },
           "Statistics of the precomputation as a dict (zeros for certificates read from a file).")
       .def("__repr__", [](const Certificates& c) {
-        return "<sscc.Certificates of " + std::to_string(c.node_count()) +
-               " nodes, root radius " + std::to_string(c.node_radius(0)) + ">";
+        return "<sscc.Certificates of " + std::to_string(c.node_count()) + " nodes, root radius " +
+               std::to_string(c.node_radius(0)) + ">";
       });
 }
 

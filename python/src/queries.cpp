@@ -97,8 +97,7 @@ void bind_queries(py::module_& m) {
            py::arg("bvh"), py::arg("certificates") = py::none(), py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
            "A detector for the hierarchy, with or without certificates (kept alive as long as the "
            "detector). Raises ValueError when the certificates belong to another model or hierarchy.")
-      .def_property_readonly("bvh", &SelfCcd::bvh, py::return_value_policy::reference_internal,
-                             "The hierarchy.")
+      .def_property_readonly("bvh", &SelfCcd::bvh, py::return_value_policy::reference_internal, "The hierarchy.")
       .def_property_readonly("certificates", &SelfCcd::certificates, py::return_value_policy::reference_internal,
                              "The certificates, or None.")
       .def(
@@ -117,7 +116,8 @@ void bind_queries(py::module_& m) {
           py::arg("minimum_separation") = 0.0,
           (std::string("The step q0 -> q1 (reduced coordinates, (r,) each). ") + kModeDoc +
            "bounds: node boxes 'hybrid' (default), 'refit' or 'subspace'. use_certificates=False gives "
-           "the traditional query. " + kKernelDoc + "Raises ValueError for q of the wrong size or not finite.")
+           "the traditional query. " +
+           kKernelDoc + "Raises ValueError for q of the wrong size or not finite.")
               .c_str())
       .def(
           "query_positions",
@@ -161,8 +161,8 @@ void bind_queries(py::module_& m) {
           py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
           "Reference: every non-adjacent triangle pair through the same kernels, O(n^2), no certificates.")
       .def("__repr__", [](const SelfCcd& detector) {
-        return "<sscc.SelfCcd over " + std::to_string(detector.bvh().model().mesh().triangle_count()) +
-               " triangles, " + (detector.certificates() ? "with" : "without") + " certificates>";
+        return "<sscc.SelfCcd over " + std::to_string(detector.bvh().model().mesh().triangle_count()) + " triangles, " +
+               (detector.certificates() ? "with" : "without") + " certificates>";
       });
 }
 

@@ -15,9 +15,8 @@ void bind_feature_arrays(py::module_& m) {
       .def_readonly("toi", &FeatureArrays::toi, "(k,) float64 time of impact in [0, 1].")
       .def("__len__", [](const FeatureArrays& f) { return f.toi.shape(0); })
       .def("__iter__", [](const FeatureArrays& f) { return py::iter(py::make_tuple(f.kind, f.indices, f.toi)); })
-      .def("__repr__", [](const FeatureArrays& f) {
-        return "<sscc.Features: " + std::to_string(f.toi.shape(0)) + " contacts>";
-      });
+      .def("__repr__",
+           [](const FeatureArrays& f) { return "<sscc.Features: " + std::to_string(f.toi.shape(0)) + " contacts>"; });
 }
 
 }  // namespace sscc::python

@@ -22,8 +22,7 @@ struct FeatureArrays {
 /// A view of `columns` consecutive int fields of each contact, starting at `first`.
 template <typename Contact>
 py::array index_columns(const std::vector<Contact>& contacts, int Contact::*first, int columns, py::handle owner) {
-  return view(contacts.empty() ? nullptr : &(contacts.front().*first),
-              {py::ssize_t(contacts.size()), columns},
+  return view(contacts.empty() ? nullptr : &(contacts.front().*first), {py::ssize_t(contacts.size()), columns},
               {py::ssize_t(sizeof(Contact)), py::ssize_t(sizeof(int))}, owner);
 }
 
@@ -36,8 +35,7 @@ py::array toi_column(const std::vector<Contact>& contacts, py::handle owner) {
 
 /// A feature list (kind, `columns` consecutive index fields from `first`, toi) as arrays.
 template <typename Feature>
-FeatureArrays feature_arrays(const std::vector<Feature>& features, int Feature::*first, int columns,
-                             py::handle owner) {
+FeatureArrays feature_arrays(const std::vector<Feature>& features, int Feature::*first, int columns, py::handle owner) {
   static_assert(sizeof(FeatureKind) == sizeof(std::uint8_t), "kinds are viewed as uint8");
   const auto* kind = features.empty() ? nullptr : reinterpret_cast<const std::uint8_t*>(&features.front().kind);
   return {view(kind, {py::ssize_t(features.size())}, {py::ssize_t(sizeof(Feature))}, owner),

@@ -58,11 +58,16 @@ std::vector<py::object> per_object(py::object sequence, const char* name, std::s
 
 const char* outcome_name(SelfTestOutcome outcome) {
   switch (outcome) {
-    case SelfTestOutcome::kTraversed: return "traversed";
-    case SelfTestOutcome::kCertified: return "certified";
-    case SelfTestOutcome::kStatic: return "static";
-    case SelfTestOutcome::kSwitchedOff: return "switched_off";
-    case SelfTestOutcome::kNotReached: return "not_reached";
+    case SelfTestOutcome::kTraversed:
+      return "traversed";
+    case SelfTestOutcome::kCertified:
+      return "certified";
+    case SelfTestOutcome::kStatic:
+      return "static";
+    case SelfTestOutcome::kSwitchedOff:
+      return "switched_off";
+    case SelfTestOutcome::kNotReached:
+      return "not_reached";
   }
   return "unknown";
 }
@@ -96,8 +101,7 @@ void bind_scene(py::module_& m) {
       .def_readonly("report", &ObjectSelfResult::report, py::return_value_policy::reference_internal,
                     "The self query's report (empty unless traversed).");
 
-  py::class_<SceneReport>(m, "SceneReport",
-                          "The result of a scene step. Arrays are read-only views into the report.")
+  py::class_<SceneReport>(m, "SceneReport", "The result of a scene step. Arrays are read-only views into the report.")
       .def_property_readonly(
           "objects",
           [](py::object self) {
@@ -121,8 +125,7 @@ void bind_scene(py::module_& m) {
       .def_property_readonly(
           "features",
           [](py::object self) {
-            return feature_arrays(self.cast<const SceneReport&>().features, &InterObjectFeature::object_first, 4,
-                                  self);
+            return feature_arrays(self.cast<const SceneReport&>().features, &InterObjectFeature::object_first, 4, self);
           },
           "Inter-object feature contacts (sscc.Features), indices rows (object_first, first, "
           "object_second, second): the vertex of object_first against the face of object_second, or "
@@ -182,8 +185,8 @@ void bind_scene(py::module_& m) {
             py::gil_scoped_release release;
             return scene.step(steps, options);
           },
-          py::arg("q0"), py::arg("q1"), py::arg("frames0") = py::none(), py::arg("frames1") = py::none(),
-          py::kw_only(), py::arg("mode") = "all", py::arg("use_certificates") = true,
+          py::arg("q0"), py::arg("q1"), py::arg("frames0") = py::none(), py::arg("frames1") = py::none(), py::kw_only(),
+          py::arg("mode") = "all", py::arg("use_certificates") = true,
           py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
           "One time step. q0, q1: one coordinate vector per object (a list, or an (objects, r) array). "
           "frames0, frames1: None (identity frames) or one frame per object, each None, a 4x4 "

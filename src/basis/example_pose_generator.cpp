@@ -40,7 +40,7 @@ Eigen::MatrixXd generate_example_poses(const TriangleMesh& mesh, const ExamplePo
   extent.maxCoeff(&longest);
   extent.minCoeff(&shortest);
   if (shortest == longest) shortest = (longest + 1) % 3;  // a cube: any other axis
-  const double half_length = 0.5 * extent[longest];     // > 0: polynomial_basis refused a point
+  const double half_length = 0.5 * extent[longest];       // > 0: polynomial_basis refused a point
   const Eigen::Vector3d long_axis = Eigen::Vector3d::Unit(longest);
   const Eigen::Vector3d short_axis = Eigen::Vector3d::Unit(shortest);
 
@@ -58,8 +58,8 @@ Eigen::MatrixXd generate_example_poses(const TriangleMesh& mesh, const ExamplePo
     for (int v = 0; v < mesh.vertex_count(); ++v) {
       const Eigen::Vector3d& p = mesh.vertices()[v];
       const double s = (p[longest] - centre[longest]) / half_length;
-      const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(beta * s, short_axis) *
-                                        Eigen::AngleAxisd(tau * s, long_axis)).toRotationMatrix();
+      const Eigen::Matrix3d rotation =
+          (Eigen::AngleAxisd(beta * s, short_axis) * Eigen::AngleAxisd(tau * s, long_axis)).toRotationMatrix();
       poses.col(k).segment<3>(3L * v) = centre + rotation * (p + displaced.segment<3>(3L * v) - centre);
     }
   }

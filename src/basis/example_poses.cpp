@@ -22,7 +22,8 @@ std::string triangle_text(const Triangle& t) {
 
 Eigen::VectorXd stack_positions(const std::vector<Eigen::Vector3d>& positions) {
   Eigen::VectorXd stacked(3 * static_cast<Eigen::Index>(positions.size()));
-  for (std::size_t v = 0; v < positions.size(); ++v) stacked.segment<3>(3 * static_cast<Eigen::Index>(v)) = positions[v];
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    stacked.segment<3>(3 * static_cast<Eigen::Index>(v)) = positions[v];
   return stacked;
 }
 
@@ -32,7 +33,8 @@ std::vector<Eigen::Vector3d> unstack_positions(const Eigen::VectorXd& stacked) {
                                 " coordinates are not a whole number of vertices");
   }
   std::vector<Eigen::Vector3d> positions(static_cast<std::size_t>(stacked.size() / 3));
-  for (std::size_t v = 0; v < positions.size(); ++v) positions[v] = stacked.segment<3>(3 * static_cast<Eigen::Index>(v));
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    positions[v] = stacked.segment<3>(3 * static_cast<Eigen::Index>(v));
   return positions;
 }
 
@@ -71,7 +73,8 @@ PoseSubspace::PoseSubspace(const TriangleMesh& reference, const Eigen::MatrixXd&
                                 std::to_string(reference.vertex_count()) + " vertices need " +
                                 std::to_string(3L * reference.vertex_count()));
   }
-  if (count < 2) throw std::invalid_argument("PCA: at least two example poses are needed, got " + std::to_string(count));
+  if (count < 2)
+    throw std::invalid_argument("PCA: at least two example poses are needed, got " + std::to_string(count));
   if (!all_finite(poses)) throw std::invalid_argument("PCA: an example pose has a NaN or infinite coordinate");
   if (!(options.variance_fraction > 0.0 && options.variance_fraction <= 1.0)) {
     throw std::invalid_argument("PCA: the variance fraction must lie in (0, 1], got " +
@@ -104,7 +107,8 @@ PoseSubspace::PoseSubspace(const TriangleMesh& reference, const Eigen::MatrixXd&
   } else if (kept == 0) {
     const double total = component_variances_.sum();
     double explained = 0.0;
-    while (kept < components && explained < options.variance_fraction * total) explained += component_variances_[kept++];
+    while (kept < components && explained < options.variance_fraction * total)
+      explained += component_variances_[kept++];
   }
   basis_ = svd.matrixU().leftCols(kept);
   make_largest_entries_positive(basis_);

@@ -147,9 +147,8 @@ std::vector<int> uniform_key_points(const std::vector<Eigen::Vector3d>& position
   std::vector<int> kept;
   const double squared = radius * radius;
   for (int v = 0; v < static_cast<int>(positions.size()); ++v) {
-    const bool covered = std::any_of(kept.begin(), kept.end(), [&](int k) {
-      return (positions[k] - positions[v]).squaredNorm() <= squared;
-    });
+    const bool covered = std::any_of(kept.begin(), kept.end(),
+                                     [&](int k) { return (positions[k] - positions[v]).squaredNorm() <= squared; });
     if (!covered) kept.push_back(v);
   }
   return kept;

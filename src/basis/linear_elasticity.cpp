@@ -32,7 +32,8 @@ double shape_gradients(const VolumeMesh& volume, int t, Eigen::Matrix<double, 3,
 
 void ElasticMaterial::validate() const {
   if (!(youngs_modulus > 0.0) || !std::isfinite(youngs_modulus)) {
-    throw std::invalid_argument("Young's modulus must be positive and finite (Pa), got " + std::to_string(youngs_modulus));
+    throw std::invalid_argument("Young's modulus must be positive and finite (Pa), got " +
+                                std::to_string(youngs_modulus));
   }
   if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5)) {
     throw std::invalid_argument("Poisson ratio must lie in (-1, 0.5), got " + std::to_string(poisson_ratio));

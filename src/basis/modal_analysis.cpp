@@ -1,9 +1,9 @@
 #include "sscc/basis/modal_analysis.hpp"
 
+#include <Spectra/SymEigsShiftSolver.h>
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
-#include <Spectra/SymEigsShiftSolver.h>
 
 #include <algorithm>
 #include <chrono>
@@ -75,8 +75,8 @@ ElasticSystem elastic_system(const TriangleMesh& mesh, const ElasticBasisOptions
   if (progress) {
     *progress << "volume: " << system.volume.method << ", " << system.volume.nodes.size() << " nodes, "
               << system.volume.tetrahedra.size() << " tetrahedra"
-              << (system.volume.note.empty() ? "" : " (" + system.volume.note + ")") << ", "
-              << seconds_since(start) << " s\n";
+              << (system.volume.note.empty() ? "" : " (" + system.volume.note + ")") << ", " << seconds_since(start)
+              << " s\n";
   }
   return system;
 }
@@ -254,7 +254,8 @@ ElasticBasis stiffness_scale(const ElasticSystem& system, const Eigen::MatrixXd&
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (reduced_stiffness + reduced_stiffness.transpose()));
   if (solver.info() != Eigen::Success) throw std::runtime_error("stiffness scaling: the reduced eigensolver failed");
   const Eigen::VectorXd& lambda = solver.eigenvalues();  // ascending
-  const double zero_threshold = kZeroEnergyFraction * (system.stiffness.diagonal().array() / system.mass.array()).mean();
+  const double zero_threshold =
+      kZeroEnergyFraction * (system.stiffness.diagonal().array() / system.mass.array()).mean();
   int zero = 0;
   while (zero < lambda.size() && lambda[zero] < zero_threshold) ++zero;
   const int kept = static_cast<int>(lambda.size()) - zero;

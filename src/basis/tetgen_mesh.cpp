@@ -25,13 +25,20 @@ namespace {
 
 std::string tetgen_error(int code) {
   switch (code) {
-    case 1: return "TetGen ran out of memory";
-    case 2: return "TetGen reported an internal error";
-    case 3: return "TetGen found self-intersecting surface triangles";
-    case 4: return "TetGen found a very small input feature size";
-    case 5: return "TetGen found two very close input facets";
-    case 10: return "TetGen found an input error";
-    default: return "TetGen failed with code " + std::to_string(code);
+    case 1:
+      return "TetGen ran out of memory";
+    case 2:
+      return "TetGen reported an internal error";
+    case 3:
+      return "TetGen found self-intersecting surface triangles";
+    case 4:
+      return "TetGen found a very small input feature size";
+    case 5:
+      return "TetGen found two very close input facets";
+    case 10:
+      return "TetGen found an input error";
+    default:
+      return "TetGen failed with code " + std::to_string(code);
   }
 }
 
@@ -41,7 +48,7 @@ namespace {
 
 /// What TetGen returns, flattened to cross a pipe.
 struct TetgenOutput {
-  std::vector<double> points;  // 3 per node
+  std::vector<double> points;   // 3 per node
   std::vector<int> tetrahedra;  // 4 per tetrahedron
 };
 
@@ -152,7 +159,8 @@ TetgenOutput run_tetgen_isolated(const TriangleMesh& mesh, const std::string& sw
   out.points.resize(sizes[1]);
   out.tetrahedra.resize(sizes[2]);
   std::memcpy(out.points.data(), received.data() + sizeof sizes, sizes[1] * sizeof(double));
-  std::memcpy(out.tetrahedra.data(), received.data() + sizeof sizes + sizes[1] * sizeof(double), sizes[2] * sizeof(int));
+  std::memcpy(out.tetrahedra.data(), received.data() + sizeof sizes + sizes[1] * sizeof(double),
+              sizes[2] * sizeof(int));
   return out;
 }
 

@@ -16,7 +16,9 @@ struct Grid {
   double cell = 0.0;
   std::array<int, 3> cells{};
 
-  long index(int i, int j, int k) const { return i + static_cast<long>(cells[0]) * (j + static_cast<long>(cells[1]) * k); }
+  long index(int i, int j, int k) const {
+    return i + static_cast<long>(cells[0]) * (j + static_cast<long>(cells[1]) * k);
+  }
   std::array<int, 3> cell_of(const Eigen::Vector3d& p) const {
     std::array<int, 3> c;
     for (int a = 0; a < 3; ++a) {
@@ -85,8 +87,8 @@ std::vector<char> solid_cells(const Grid& grid, std::vector<char> marked) {
 
 /// The six tetrahedra of a cube around its main diagonal (corner 0 to corner 7; corner
 /// bits are x, y, z). The same split in every cell makes the tetrahedra conforming.
-constexpr std::array<std::array<int, 4>, 6> kCubeTetrahedra{{
-    {0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
+constexpr std::array<std::array<int, 4>, 6> kCubeTetrahedra{
+    {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
 
 }  // namespace
 

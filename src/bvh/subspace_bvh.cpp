@@ -107,8 +107,7 @@ void SubspaceBvh::build(int node, std::vector<int>& triangles, std::mt19937_64& 
   }
   std::vector<std::vector<int>> groups(kBranchingFactor);
   for (int i = 0; i < n; ++i) groups[cluster[i]].push_back(triangles[i]);
-  groups.erase(std::remove_if(groups.begin(), groups.end(), [](const auto& g) { return g.empty(); }),
-               groups.end());
+  groups.erase(std::remove_if(groups.begin(), groups.end(), [](const auto& g) { return g.empty(); }), groups.end());
   if (groups.size() < 2) {
     // Identical features: split by index into quarters (any partition is correct).
     groups.assign(kBranchingFactor, {});
@@ -187,8 +186,7 @@ Aabb SubspaceBvh::box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) co
   return {centre - half, centre + half};
 }
 
-Aabb SubspaceBvh::swept_box(int n, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1,
-                            double s) const {
+Aabb SubspaceBvh::swept_box(int n, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s) const {
   const SubspaceBound b = subspace_bound(n);
   const Eigen::Vector3d c0 = b.centre + b.mean_modes * q_hat0;
   const Eigen::Vector3d c1 = b.centre + b.mean_modes * q_hat1;

@@ -131,8 +131,8 @@ class Precomputation {
       add_triangle_pairs(pairs, minimum, counters);
       return;
     }
-    const bool split_a = !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >=
-                                                                nb.triangle_end - nb.triangle_begin);
+    const bool split_a =
+        !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >= nb.triangle_end - nb.triangle_begin);
     const SubspaceBvh::Node& split = split_a ? na : nb;
     const int other = split_a ? b : a;
     std::vector<std::pair<double, int>> children;
@@ -173,7 +173,8 @@ double global_radius_of(const SubspaceModel& model, double scale) {
   const RowMajorMatrix& basis = model.scaled_basis();
   double largest = 0.0;
   for (int j = 0; j < model.mode_count(); ++j) {
-    for (int v = 0; v < model.mesh().vertex_count(); ++v) largest = std::max(largest, basis.middleRows<3>(3 * v).col(j).norm());
+    for (int v = 0; v < model.mesh().vertex_count(); ++v)
+      largest = std::max(largest, basis.middleRows<3>(3 * v).col(j).norm());
   }
   const double radius = 0.5 * model.mesh().bounding_box_diagonal();
   return largest > 0.0 ? scale * radius / largest : INFINITY;
@@ -248,8 +249,8 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
       const double reach = std::min(global, kSiblingReach * children);
       for (int a = node.first_child; a < node.first_child + node.child_count; ++a) {
         for (int b = a + 1; b < node.first_child + node.child_count; ++b) {
-          const int size = nodes[a].triangle_end - nodes[a].triangle_begin + nodes[b].triangle_end -
-                           nodes[b].triangle_begin;
+          const int size =
+              nodes[a].triangle_end - nodes[a].triangle_begin + nodes[b].triangle_end - nodes[b].triangle_begin;
           tasks.push_back({n, a, b, size, {reach, reach}});
         }
       }
@@ -305,8 +306,7 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
 
 void Certificates::check_belongs_to(const SubspaceBvh& bvh) const {
   if (static_cast<int>(bvh.nodes().size()) != node_count() || key_of(bvh, parameters_) != key_) {
-    throw std::invalid_argument(
-        "certificates: computed for another mesh, basis, weights or hierarchy (key mismatch)");
+    throw std::invalid_argument("certificates: computed for another mesh, basis, weights or hierarchy (key mismatch)");
   }
 }
 

@@ -181,8 +181,8 @@ double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, cons
     for (int k = 0; k < 3; ++k) {
       const Weights6 xb = on_second(pb.row(k).transpose());
       const Eigen::Vector3d& b_point = corners_b[k];
-      const double numerator = unit.dot(a_point - b_point) - kDistanceAllowance * frame.extent() -
-                               2.0 * frame.position_rounding().absolute;
+      const double numerator =
+          unit.dot(a_point - b_point) - kDistanceAllowance * frame.extent() - 2.0 * frame.position_rounding().absolute;
       if (!(numerator > 0.0)) return 0.0;
       bound = std::min(bound, numerator / (std::sqrt(frame.projected_norm_squared_upper(forms, xb - xa)) +
                                            2.0 * frame.position_rounding().per_norm));
@@ -203,9 +203,9 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   // Floored relative to the largest (identity when nothing moves): the map stays finite and
   // its conditioning bounded; it only chooses the multiplier, so any floor is sound.
   const double largest = solver.eigenvalues()[2];
-  const Eigen::Vector3d eigenvalues =
-      largest > 0.0 ? Eigen::Vector3d(solver.eigenvalues().cwiseMax(kMapConditioning * largest))
-                    : Eigen::Vector3d::Ones();
+  const Eigen::Vector3d eigenvalues = largest > 0.0
+                                          ? Eigen::Vector3d(solver.eigenvalues().cwiseMax(kMapConditioning * largest))
+                                          : Eigen::Vector3d::Ones();
   // Contact of Xa and Xb under constant modes needs A q_hat = Xa - Xb (A = mean_b - mean_a),
   // whose smallest solution has norm ||(A A^T)^(-1/2) (Xa - Xb)||: a triangle distance after
   // that map. Only its closest points are used (the bound itself is the dual bound).
@@ -246,7 +246,8 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   }
   e.upper = std::sqrt(e.upper);
   if (std::isfinite(e.upper)) {
-    e.lower = std::max(e.lower, dual_bound(frame, pa, pb, corners_a, corners_b, true_modes.eigenvectors() * inverse_along));
+    e.lower =
+        std::max(e.lower, dual_bound(frame, pa, pb, corners_a, corners_b, true_modes.eigenvectors() * inverse_along));
   }
   return e;
 }

@@ -12,8 +12,7 @@
 namespace sscc {
 
 MeshFileError::MeshFileError(const std::string& file, int line, const std::string& problem)
-    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
-                         problem) {}
+    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + problem) {}
 
 std::string MeshReadReport::summary() const {
   const auto count = [](std::size_t n, const char* what) {
@@ -69,8 +68,8 @@ TriangleMesh read_mesh(const std::string& path, MeshReadReport* report) {
     const std::vector<int>& face = raw.faces[f];
     for (int v : face) {
       if (v < 0 || v >= n) {
-        throw MeshFileError(path, raw.face_lines[f], "vertex index " + std::to_string(v) +
-                                                         " outside [0, " + std::to_string(n) + ")");
+        throw MeshFileError(path, raw.face_lines[f],
+                            "vertex index " + std::to_string(v) + " outside [0, " + std::to_string(n) + ")");
       }
     }
     if (repeats_a_vertex(face)) throw MeshFileError(path, raw.face_lines[f], "a face repeats a vertex");

@@ -19,9 +19,7 @@ bool LineReader::next(std::string& line, char comment) {
   return false;
 }
 
-void LineReader::fail(const std::string& problem) const {
-  throw MeshFileError(file_, line_, problem);
-}
+void LineReader::fail(const std::string& problem) const { throw MeshFileError(file_, line_, problem); }
 
 double parse_coordinate(const std::string& token, const LineReader& reader) {
   char* end = nullptr;

@@ -14,8 +14,7 @@ RawMesh read_obj(LineReader& reader) {
     const std::vector<std::string> tokens = split(line);
     if (tokens[0] == "v") {
       if (tokens.size() < 4) reader.fail("a vertex needs three coordinates");
-      mesh.vertices.emplace_back(parse_coordinate(tokens[1], reader),
-                                 parse_coordinate(tokens[2], reader),
+      mesh.vertices.emplace_back(parse_coordinate(tokens[1], reader), parse_coordinate(tokens[2], reader),
                                  parse_coordinate(tokens[3], reader));
     } else if (tokens[0] == "f") {
       if (tokens.size() < 4) reader.fail("a face needs at least three vertices");

@@ -21,19 +21,16 @@ RawMesh read_off(LineReader& reader) {
   RawMesh mesh;
   for (long v = 0; v < vertex_count; ++v) {
     if (!reader.next(line, '#')) {
-      reader.fail("file ends after " + std::to_string(v) + " of " +
-                  std::to_string(vertex_count) + " vertices");
+      reader.fail("file ends after " + std::to_string(v) + " of " + std::to_string(vertex_count) + " vertices");
     }
     tokens = split(line);
     if (tokens.size() < 3) reader.fail("a vertex needs three coordinates");
-    mesh.vertices.emplace_back(parse_coordinate(tokens[0], reader),
-                               parse_coordinate(tokens[1], reader),
+    mesh.vertices.emplace_back(parse_coordinate(tokens[0], reader), parse_coordinate(tokens[1], reader),
                                parse_coordinate(tokens[2], reader));
   }
   for (long f = 0; f < face_count; ++f) {
     if (!reader.next(line, '#')) {
-      reader.fail("file ends after " + std::to_string(f) + " of " + std::to_string(face_count) +
-                  " faces");
+      reader.fail("file ends after " + std::to_string(f) + " of " + std::to_string(face_count) + " faces");
     }
     tokens = split(line);
     const int n = parse_index(tokens[0], reader);

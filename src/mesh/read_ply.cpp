@@ -3,9 +3,9 @@
 // past and ignored.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #include "common/finite.hpp"
@@ -33,8 +33,8 @@ struct Element {
 int type_size(const std::string& type, const LineReader& reader) {
   if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
   if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
-      type == "float" || type == "float32") return 4;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+    return 4;
   if (type == "double" || type == "float64") return 8;
   reader.fail("unknown PLY property type '" + type + "'");
 }
@@ -108,10 +108,14 @@ RawMesh read_ply(LineReader& reader) {
     if (t[0] == "comment" || t[0] == "obj_info") continue;
     if (t[0] == "format") {
       if (t.size() < 2) reader.fail("incomplete format line");
-      if (t[1] == "ascii") format = Format::kAscii;
-      else if (t[1] == "binary_little_endian") format = Format::kLittleEndian;
-      else if (t[1] == "binary_big_endian") format = Format::kBigEndian;
-      else reader.fail("unknown PLY format '" + t[1] + "'");
+      if (t[1] == "ascii")
+        format = Format::kAscii;
+      else if (t[1] == "binary_little_endian")
+        format = Format::kLittleEndian;
+      else if (t[1] == "binary_big_endian")
+        format = Format::kBigEndian;
+      else
+        reader.fail("unknown PLY format '" + t[1] + "'");
     } else if (t[0] == "element") {
       if (t.size() != 3) reader.fail("expected 'element NAME COUNT'");
       elements.push_back({t[1], parse_integer(t[2], reader), {}});

@@ -13,8 +13,7 @@ TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Tr
   for (int v = 0; v < n; ++v) {
     for (int k = 0; k < 3; ++k) {
       if (!std::isfinite(vertices_[v][k])) {
-        throw std::invalid_argument("TriangleMesh: vertex " + std::to_string(v) +
-                                    " has a non-finite coordinate");
+        throw std::invalid_argument("TriangleMesh: vertex " + std::to_string(v) + " has a non-finite coordinate");
       }
     }
   }
@@ -24,14 +23,12 @@ TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Tr
     const Triangle& tri = triangles_[t];
     for (int k = 0; k < 3; ++k) {
       if (tri[k] < 0 || tri[k] >= n) {
-        throw std::invalid_argument("TriangleMesh: triangle " + std::to_string(t) +
-                                    " has vertex index " + std::to_string(tri[k]) +
-                                    " outside [0, " + std::to_string(n) + ")");
+        throw std::invalid_argument("TriangleMesh: triangle " + std::to_string(t) + " has vertex index " +
+                                    std::to_string(tri[k]) + " outside [0, " + std::to_string(n) + ")");
       }
     }
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) {
-      throw std::invalid_argument("TriangleMesh: triangle " + std::to_string(t) +
-                                  " repeats a vertex");
+      throw std::invalid_argument("TriangleMesh: triangle " + std::to_string(t) + " repeats a vertex");
     }
     for (int k = 0; k < 3; ++k) {
       const int a = tri[k];

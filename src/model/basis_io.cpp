@@ -40,9 +40,8 @@ Eigen::MatrixXd read_vega_basis(const std::string& path) {
   }
   const std::uint64_t entries = static_cast<std::uint64_t>(rows) * static_cast<std::uint64_t>(cols);
   if (size < 8 || entries != static_cast<std::uint64_t>(size - 8) / 8 || (size - 8) % 8 != 0) {
-    fail(path, "size " + std::to_string(size) + " bytes does not match its " + std::to_string(rows) +
-                   " x " + std::to_string(cols) + " header (" + std::to_string(8 + 8 * entries) +
-                   " bytes)");
+    fail(path, "size " + std::to_string(size) + " bytes does not match its " + std::to_string(rows) + " x " +
+                   std::to_string(cols) + " header (" + std::to_string(8 + 8 * entries) + " bytes)");
   }
   Eigen::MatrixXd m(rows, cols);  // column-major, like the file
   in.read(reinterpret_cast<char*>(m.data()), 8 * static_cast<std::streamoff>(rows) * cols);
@@ -84,8 +83,8 @@ Eigen::MatrixXd read_text_matrix(const std::string& path) {
     }
     if (row.empty()) continue;
     if (!rows.empty() && row.size() != rows.front().size()) {
-      fail(path, "line " + std::to_string(number) + " has " + std::to_string(row.size()) +
-                     " numbers, the first row " + std::to_string(rows.front().size()));
+      fail(path, "line " + std::to_string(number) + " has " + std::to_string(row.size()) + " numbers, the first row " +
+                     std::to_string(rows.front().size()));
     }
     rows.push_back(std::move(row));
   }

@@ -16,8 +16,7 @@ struct PolynomialFrame {
 
 PolynomialFrame frame_of(const TriangleMesh& mesh, int modes) {
   if (modes < 1 || modes > kMaxPolynomialModes) {
-    throw std::invalid_argument("polynomial_basis: " + std::to_string(modes) +
-                                " modes requested; there are 1 to " +
+    throw std::invalid_argument("polynomial_basis: " + std::to_string(modes) + " modes requested; there are 1 to " +
                                 std::to_string(kMaxPolynomialModes));
   }
   if (mesh.vertex_count() == 0) throw std::invalid_argument("polynomial_basis: the mesh has no vertices");
@@ -37,8 +36,8 @@ Eigen::MatrixXd evaluate(const std::vector<Eigen::Vector3d>& points, const Polyn
   Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(3 * n, modes);
   for (long v = 0; v < n; ++v) {
     const Eigen::Vector3d x = (points[v] - frame.centre).cwiseQuotient(frame.half);
-    const double functions[9] = {x[0], x[1], x[2], x[0] * x[0], x[1] * x[1], x[2] * x[2],
-                                 x[0] * x[1], x[1] * x[2], x[2] * x[0]};
+    const double functions[9] = {x[0],        x[1],        x[2],        x[0] * x[0], x[1] * x[1],
+                                 x[2] * x[2], x[0] * x[1], x[1] * x[2], x[2] * x[0]};
     for (int m = 0; m < modes; ++m) {
       const int axis = m < 9 ? m / 3 : (m - 9) / 6;
       const int function = m < 9 ? m % 3 : 3 + (m - 9) % 6;

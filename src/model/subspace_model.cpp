@@ -8,24 +8,22 @@
 
 namespace sscc {
 
-SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis,
-                             const Eigen::VectorXd& weights) {
+SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis, const Eigen::VectorXd& weights) {
   const long rows = 3L * mesh.vertex_count();
   if (basis.rows() != rows) {
     throw std::invalid_argument("SubspaceModel: the basis has " + std::to_string(basis.rows()) +
-                                " rows, but the mesh's " + std::to_string(mesh.vertex_count()) +
-                                " vertices need " + std::to_string(rows));
+                                " rows, but the mesh's " + std::to_string(mesh.vertex_count()) + " vertices need " +
+                                std::to_string(rows));
   }
   if (basis.cols() == 0) throw std::invalid_argument("SubspaceModel: the basis has no modes");
   if (weights.size() != basis.cols()) {
-    throw std::invalid_argument("SubspaceModel: " + std::to_string(weights.size()) +
-                                " weights for " + std::to_string(basis.cols()) + " modes");
+    throw std::invalid_argument("SubspaceModel: " + std::to_string(weights.size()) + " weights for " +
+                                std::to_string(basis.cols()) + " modes");
   }
   if (!all_finite(basis)) throw std::invalid_argument("SubspaceModel: the basis has a NaN or infinity");
   for (long i = 0; i < weights.size(); ++i) {
     if (!(weights[i] > 0.0) || !std::isfinite(weights[i])) {
-      throw std::invalid_argument("SubspaceModel: weight " + std::to_string(i) +
-                                  " is not a positive finite number");
+      throw std::invalid_argument("SubspaceModel: weight " + std::to_string(i) + " is not a positive finite number");
     }
   }
   RowMajorMatrix scaled_basis = basis * weights.cwiseSqrt().cwiseInverse().asDiagonal();
@@ -38,9 +36,8 @@ SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis,
 Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) const {
   const Eigen::VectorXd& weights = state_->weights;
   if (q.size() != weights.size()) {
-    throw std::invalid_argument("SubspaceModel: q has " + std::to_string(q.size()) +
-                                " coordinates, the model has " + std::to_string(weights.size()) +
-                                " modes");
+    throw std::invalid_argument("SubspaceModel: q has " + std::to_string(q.size()) + " coordinates, the model has " +
+                                std::to_string(weights.size()) + " modes");
   }
   for (long i = 0; i < q.size(); ++i) {
     if (!std::isfinite(q[i])) {
@@ -54,9 +51,7 @@ Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) cons
   return q_hat;
 }
 
-double SubspaceModel::weighted_norm(const Eigen::VectorXd& q) const {
-  return scaled_coordinates(q).stableNorm();
-}
+double SubspaceModel::weighted_norm(const Eigen::VectorXd& q) const { return scaled_coordinates(q).stableNorm(); }
 
 std::vector<Eigen::Vector3d> SubspaceModel::deformed_positions(const Eigen::VectorXd& q) const {
   const Eigen::VectorXd q_hat = scaled_coordinates(q);

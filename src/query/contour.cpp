@@ -13,15 +13,18 @@ std::vector<DirectedEdge> boundary_chain(std::vector<DirectedEdge> edges) {
   std::vector<std::pair<DirectedEdge, int>> signed_edges;
   signed_edges.reserve(edges.size());
   for (const DirectedEdge& e : edges) {
-    if (e[0] < e[1]) signed_edges.push_back({e, 1});
-    else signed_edges.push_back({{e[1], e[0]}, -1});
+    if (e[0] < e[1])
+      signed_edges.push_back({e, 1});
+    else
+      signed_edges.push_back({{e[1], e[0]}, -1});
   }
   std::sort(signed_edges.begin(), signed_edges.end());
   std::vector<DirectedEdge> chain;
   for (std::size_t i = 0; i < signed_edges.size();) {
     std::size_t j = i;
     int net = 0;
-    for (; j < signed_edges.size() && signed_edges[j].first == signed_edges[i].first; ++j) net += signed_edges[j].second;
+    for (; j < signed_edges.size() && signed_edges[j].first == signed_edges[i].first; ++j)
+      net += signed_edges[j].second;
     const DirectedEdge& key = signed_edges[i].first;
     for (int k = 0; k < std::abs(net); ++k) chain.push_back(net > 0 ? key : DirectedEdge{key[1], key[0]});
     i = j;

@@ -53,7 +53,8 @@ PoseStepReport PoseStepCcd::query(const std::vector<Eigen::Vector3d>& x0, const 
   report.residual1 = subspace_.residual(stacked1, report.q1);
   report.tolerance = options.residual_fraction * subspace_.mean_shape().bounding_box_diagonal();
   report.fell_back = report.residual0.max_vertex > report.tolerance || report.residual1.max_vertex > report.tolerance;
-  report.ccd = report.fell_back ? ccd_.query_positions(x0, x1, options.ccd) : ccd_.query(report.q0, report.q1, options.ccd);
+  report.ccd =
+      report.fell_back ? ccd_.query_positions(x0, x1, options.ccd) : ccd_.query(report.q0, report.q1, options.ccd);
   return report;
 }
 

@@ -35,8 +35,8 @@ using detail::hull;
 using detail::LazyBoxes;
 using detail::overlap;
 using detail::Sweep;
-using detail::swept_overlap;
 using detail::sweeps_may_touch;
+using detail::swept_overlap;
 
 SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<FeatureContact> features,
                             SelfCcdStats stats, std::chrono::steady_clock::time_point start) {
@@ -246,8 +246,8 @@ class StepContext {
   void vertex_face(int v, int t) {
     if (stopped()) return;
     const Triangle& f = mesh_.triangles()[t];
-    hits_.record(ccd::vertex_face_ccd(x0_[v], x0_[f[0]], x0_[f[1]], x0_[f[2]], x1_[v], x1_[f[0]], x1_[f[1]],
-                                      x1_[f[2]], options_.kernel),
+    hits_.record(ccd::vertex_face_ccd(x0_[v], x0_[f[0]], x0_[f[1]], x0_[f[2]], x1_[v], x1_[f[0]], x1_[f[1]], x1_[f[2]],
+                                      options_.kernel),
                  {FeatureKind::kVertexFace, v, t, 1.0});
   }
 
@@ -411,8 +411,13 @@ SelfCcdReport parallel_traversal(const SubspaceBvh& bvh, const Certificates* cer
 class DiscreteContext {
  public:
   DiscreteContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat, double norm, const SelfCcdOptions& options)
-      : bvh_(bvh), options_(options), q_hat_(q_hat), norm_(norm),
-        x_(bvh.model().mesh().vertex_count()), computed_(x_.size(), 0), boxes_(bvh.nodes().size()) {}
+      : bvh_(bvh),
+        options_(options),
+        q_hat_(q_hat),
+        norm_(norm),
+        x_(bvh.model().mesh().vertex_count()),
+        computed_(x_.size(), 0),
+        boxes_(bvh.nodes().size()) {}
 
   bool nodes_overlap(int a, int b) {
     ++stats_.box_tests;
@@ -578,8 +583,7 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const auto start = std::chrono::steady_clock::now();
   const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
-  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options,
-                      nullptr);
+  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, nullptr);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
     for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);

@@ -30,8 +30,7 @@ struct TraversalTask {
 class TaskFrontier {
  public:
   TaskFrontier(const SubspaceBvh& bvh, int threads)
-      : bvh_(bvh),
-        triangle_limit_(std::max(1, bvh.model().mesh().triangle_count() / (kTasksPerThread * threads))) {}
+      : bvh_(bvh), triangle_limit_(std::max(1, bvh.model().mesh().triangle_count() / (kTasksPerThread * threads))) {}
 
   /// Whether the pair became a task (the traversal then leaves it to the task).
   bool take(int a, int b) {

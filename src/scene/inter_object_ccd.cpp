@@ -73,9 +73,11 @@ void InterObjectCcd::test_triangle_pair(int i, int j) {
   const Aabb box_b = swept_box(sweep_b);
   for (int k = 0; k < 3; ++k) {
     const int v = mesh_a.triangles()[ta][k];
-    if (first_around_vertex(mesh_a, v, ta) && overlap(point_box(a_, v), box_b, separation())) vertex_face(a_, object_a_, v, b_, object_b_, tb);
+    if (first_around_vertex(mesh_a, v, ta) && overlap(point_box(a_, v), box_b, separation()))
+      vertex_face(a_, object_a_, v, b_, object_b_, tb);
     const int w = mesh_b.triangles()[tb][k];
-    if (first_around_vertex(mesh_b, w, tb) && overlap(point_box(b_, w), box_a, separation())) vertex_face(b_, object_b_, w, a_, object_a_, ta);
+    if (first_around_vertex(mesh_b, w, tb) && overlap(point_box(b_, w), box_a, separation()))
+      vertex_face(b_, object_b_, w, a_, object_a_, ta);
   }
   for (int k = 0; k < 3; ++k) {
     const int e = mesh_a.triangle_edges(ta)[k];
@@ -94,8 +96,8 @@ void InterObjectCcd::vertex_face(ObjectMotion& vertex_side, int object_v, int v,
   if (stopped()) return;
   const Triangle& t = face_side.mesh().triangles()[f];
   hits_.record(ccd::vertex_face_ccd(vertex_side.start(v), face_side.start(t[0]), face_side.start(t[1]),
-                                    face_side.start(t[2]), vertex_side.end(v), face_side.end(t[0]),
-                                    face_side.end(t[1]), face_side.end(t[2]), options_.kernel),
+                                    face_side.start(t[2]), vertex_side.end(v), face_side.end(t[0]), face_side.end(t[1]),
+                                    face_side.end(t[2]), options_.kernel),
                {FeatureKind::kVertexFace, object_v, v, object_f, f, 1.0});
 }
 
@@ -112,13 +114,12 @@ std::vector<InterObjectContact> InterObjectCcd::contacts() const {
   EarliestPerKey<std::tuple<int, int, int, int>> earliest;
   const auto mesh_of = [&](int object) -> const TriangleMesh& { return object == object_a_ ? a_.mesh() : b_.mesh(); };
   for (const InterObjectFeature& c : hits_.hits()) {
-    for_each_triangle_pair_of(c.kind, mesh_of(c.object_first), c.first, mesh_of(c.object_second), c.second,
-                              [&](int t, int u) {
-                                earliest.add(c.object_first < c.object_second
-                                                 ? std::make_tuple(c.object_first, t, c.object_second, u)
-                                                 : std::make_tuple(c.object_second, u, c.object_first, t),
-                                             c.toi);
-                              });
+    for_each_triangle_pair_of(
+        c.kind, mesh_of(c.object_first), c.first, mesh_of(c.object_second), c.second, [&](int t, int u) {
+          earliest.add(c.object_first < c.object_second ? std::make_tuple(c.object_first, t, c.object_second, u)
+                                                        : std::make_tuple(c.object_second, u, c.object_first, t),
+                       c.toi);
+        });
   }
   std::vector<InterObjectContact> result;
   for (const auto& [key, toi] : earliest.earliest()) {

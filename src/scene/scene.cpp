@@ -24,7 +24,8 @@ void check_frame(const RigidFrame& frame, int object) {
   if (!all_finite(frame.rotation) || !all_finite(frame.translation)) {
     throw std::invalid_argument(where + "the rigid frame has a NaN or infinity");
   }
-  const double deviation = (frame.rotation.transpose() * frame.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  const double deviation =
+      (frame.rotation.transpose() * frame.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (!(deviation <= kRotationTolerance) || !(frame.rotation.determinant() > 0.0)) {
     throw std::invalid_argument(where + "the frame's rotation is not a rotation (R^T R - I reaches " +
                                 std::to_string(deviation) + ", or det R <= 0)");
@@ -210,7 +211,8 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
       ObjectSelfResult& result = self[task.object_a];
       SelfCcdOptions traversal = self_options;
       traversal.threads = query_threads;
-      result.report = objects_[task.object_a].detector.query(steps[task.object_a].q0, steps[task.object_a].q1, traversal);
+      result.report =
+          objects_[task.object_a].detector.query(steps[task.object_a].q0, steps[task.object_a].q1, traversal);
       result.outcome = result.report.stats.root_certified ? SelfTestOutcome::kCertified : SelfTestOutcome::kTraversed;
       hit = result.report.collided();
     } else {

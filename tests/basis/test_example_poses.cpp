@@ -51,7 +51,8 @@ TEST_CASE("PCA with every component reproduces the training poses to round-off",
     if (i > 0) CHECK(pca.variances()[i] <= pca.variances()[i - 1]);
   }
   const sscc::SubspaceModel model = pca.model();
-  CHECK(model.weighted_norm(q.col(0)) == Approx(std::sqrt((q.col(0).cwiseAbs2().cwiseQuotient(pca.variances())).sum())));
+  CHECK(model.weighted_norm(q.col(0)) ==
+        Approx(std::sqrt((q.col(0).cwiseAbs2().cwiseQuotient(pca.variances())).sum())));
 }
 
 TEST_CASE("PCA with a fraction of 1 keeps components too small to change the variance's sum", "[pca]") {
@@ -63,8 +64,8 @@ TEST_CASE("PCA with a fraction of 1 keeps components too small to change the var
   const Eigen::Index n = 3 * bar.vertex_count();
   Eigen::MatrixXd random(n, 4);
   for (Eigen::Index i = 0; i < random.size(); ++i) random.data()[i] = normal(rng);
-  const Eigen::MatrixXd directions = Eigen::HouseholderQR<Eigen::MatrixXd>(random).householderQ() *
-                                     Eigen::MatrixXd::Identity(n, 4);
+  const Eigen::MatrixXd directions =
+      Eigen::HouseholderQR<Eigen::MatrixXd>(random).householderQ() * Eigen::MatrixXd::Identity(n, 4);
   Eigen::MatrixXd poses = sscc::stack_positions(bar.vertices()).replicate(1, 6);
   for (int p = 0; p < 6; ++p) {
     for (int i = 0; i < 4; ++i) poses.col(p) += 0.1 * std::pow(1e-3, i) * normal(rng) * directions.col(i);

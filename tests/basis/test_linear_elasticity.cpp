@@ -8,7 +8,8 @@
 namespace {
 
 /// Node displacements of the linear field u(x) = G x + b.
-Eigen::VectorXd linear_field(const sscc::VolumeMesh& volume, const Eigen::Matrix3d& gradient, const Eigen::Vector3d& b) {
+Eigen::VectorXd linear_field(const sscc::VolumeMesh& volume, const Eigen::Matrix3d& gradient,
+                             const Eigen::Vector3d& b) {
   Eigen::VectorXd u(3 * volume.nodes.size());
   for (std::size_t n = 0; n < volume.nodes.size(); ++n) u.segment<3>(3 * n) = gradient * volume.nodes[n] + b;
   return u;

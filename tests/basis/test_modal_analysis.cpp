@@ -35,7 +35,9 @@ double first_bending_hz(const sscc::ElasticMaterial& m) {
   return 4.7300 * 4.7300 / (2 * M_PI * kLength * kLength) * std::sqrt(m.youngs_modulus * inertia / (m.density * area));
 }
 /// A free-free bar's first axial mode: f = sqrt(E / rho) / (2 L).
-double first_axial_hz(const sscc::ElasticMaterial& m) { return std::sqrt(m.youngs_modulus / m.density) / (2 * kLength); }
+double first_axial_hz(const sscc::ElasticMaterial& m) {
+  return std::sqrt(m.youngs_modulus / m.density) / (2 * kLength);
+}
 
 }  // namespace
 
@@ -86,7 +88,8 @@ TEST_CASE("vibration modes solve K phi = lambda M phi, mass-normalised", "[basis
   for (int i = 0; i < 10; ++i) {
     CHECK(modes.eigenvalues[i] > 0.0);
     if (i > 0) CHECK(modes.eigenvalues[i] >= modes.eigenvalues[i - 1]);
-    const Eigen::VectorXd residual = k * modes.vectors.col(i) - modes.eigenvalues[i] * m.cwiseProduct(modes.vectors.col(i));
+    const Eigen::VectorXd residual =
+        k * modes.vectors.col(i) - modes.eigenvalues[i] * m.cwiseProduct(modes.vectors.col(i));
     CHECK(residual.norm() < 1e-6 * modes.eigenvalues[i] * m.cwiseProduct(modes.vectors.col(i)).norm());
   }
   // Rigid motions (a lower count expected) are found and skipped anyway.

@@ -64,9 +64,10 @@ bool params_in_domain(const sscc::ccd::CcdResult& r, Kind kind) {
 
 }  // namespace
 
-TEST_CASE("metamorphic: scalings by 2^k, grid translations, time reversal and relabelling "
-          "keep the decision on 1e5 integer-grid queries",
-          "[kernels][metamorphic]") {
+TEST_CASE(
+    "metamorphic: scalings by 2^k, grid translations, time reversal and relabelling "
+    "keep the decision on 1e5 integer-grid queries",
+    "[kernels][metamorphic]") {
   std::mt19937_64 rng(2024);
   std::uniform_int_distribution<int> exponent(-1070, 1000);
   std::uniform_int_distribution<int> shift(-64, 64);
@@ -79,10 +80,18 @@ TEST_CASE("metamorphic: scalings by 2^k, grid translations, time reversal and re
     const sscc::ccd::CcdResult base = sscc::validation::run_kernel(q);
     Query transformed;
     switch ((i / 2) % 4) {
-      case 0: transformed = scaled(q, exponent(rng)); break;
-      case 1: transformed = translated(q, Eigen::Vector3d(shift(rng), shift(rng), shift(rng))); break;
-      case 2: transformed = time_reversed(q); break;
-      default: transformed = permuted(q, rng); break;
+      case 0:
+        transformed = scaled(q, exponent(rng));
+        break;
+      case 1:
+        transformed = translated(q, Eigen::Vector3d(shift(rng), shift(rng), shift(rng)));
+        break;
+      case 2:
+        transformed = time_reversed(q);
+        break;
+      default:
+        transformed = permuted(q, rng);
+        break;
     }
     const sscc::ccd::CcdResult other = sscc::validation::run_kernel(transformed);
     hits += base.hit ? 1 : 0;
@@ -104,8 +113,8 @@ TEST_CASE("contact parameters at subnormal coordinates: finite and right", "[ker
   const double s = 0x1p-1070;
   const Eigen::Vector3d f0(0, 0, 0), f1(4 * s, 0, 0), f2(0, 4 * s, 0);
   // The vertex falls through the face at (s, s, 0), barycentrics (0.25, 0.25), at t = 1/2.
-  const auto vf = sscc::ccd::vertex_face_ccd(Eigen::Vector3d(s, s, s), f0, f1, f2,
-                                            Eigen::Vector3d(s, s, -s), f0, f1, f2);
+  const auto vf =
+      sscc::ccd::vertex_face_ccd(Eigen::Vector3d(s, s, s), f0, f1, f2, Eigen::Vector3d(s, s, -s), f0, f1, f2);
   REQUIRE(vf.hit);
   CHECK(vf.params[0] == Approx(0.25).margin(1e-6));
   CHECK(vf.params[1] == Approx(0.25).margin(1e-6));

@@ -95,12 +95,10 @@ TEST_CASE("bad input is refused with a message", "[kernels]") {
   CHECK_THROWS_WITH(sscc::validation::run_kernel(q), Catch::Contains("non-finite"));
   sscc::ccd::CcdOptions options;
   options.minimum_separation = -1.0;
-  CHECK_THROWS_WITH(sscc::validation::run_kernel(cases.front().query, options),
-                    Catch::Contains("minimum_separation"));
+  CHECK_THROWS_WITH(sscc::validation::run_kernel(cases.front().query, options), Catch::Contains("minimum_separation"));
   options = {};
   options.toi_tolerance = 0.0;
-  CHECK_THROWS_WITH(sscc::validation::run_kernel(cases.front().query, options),
-                    Catch::Contains("toi_tolerance"));
+  CHECK_THROWS_WITH(sscc::validation::run_kernel(cases.front().query, options), Catch::Contains("toi_tolerance"));
 }
 
 TEST_CASE("huge and tiny edges together: underflow cannot fake a certain sign", "[kernels]") {
@@ -118,13 +116,11 @@ TEST_CASE("huge and tiny edges together: underflow cannot fake a certain sign", 
     Eigen::Vector3d tiny, on_face, tiny_end;
     for (int k = 0; k < 3; ++k) {
       tiny[k] = std::ldexp(r[k], -525);
-      on_face[k] = std::ldexp(ints[k] + r[k], -526);  // 2^-826 huge + tiny / 2, exactly
+      on_face[k] = std::ldexp(ints[k] + r[k], -526);   // 2^-826 huge + tiny / 2, exactly
       tiny_end[k] = std::ldexp(ints[k] - r[k], -526);  // 2^-826 huge - tiny / 2, exactly
     }
-    const Query vf{sscc::validation::Kind::kVertexFace,
-                   {on_face, zero, huge, tiny, on_face, zero, huge, tiny}};
-    const Query ee{sscc::validation::Kind::kEdgeEdge,
-                   {zero, huge, tiny, tiny_end, zero, huge, tiny, tiny_end}};
+    const Query vf{sscc::validation::Kind::kVertexFace, {on_face, zero, huge, tiny, on_face, zero, huge, tiny}};
+    const Query ee{sscc::validation::Kind::kEdgeEdge, {zero, huge, tiny, tiny_end, zero, huge, tiny, tiny_end}};
     for (const Query& q : {vf, ee}) {
       INFO(sscc::validation::describe(q));
       CHECK(disagreement_with_reference(q) == "");
@@ -140,19 +136,17 @@ TEST_CASE("contact parameters on nearly parallel edges and needle triangles", "[
   using sscc::validation::Kind;
   const std::vector<Query> queries = {
       {Kind::kEdgeEdge,  // edges 2e-8 rad apart at contact
-       {V(-0x1.6p+1, -0x1.2p+1, 0x1.600004p+1), V(0x1.3p+1, 0x1.1p+2, 0x1.6p+0),
-        V(0x1.3p+3, 0x1.58p+2, -0x1.8p-1), V(0x1.ep+0, 0x1.ap+1, 0x1.ep+1),
-        V(-0x1.2fffffffp+2, -0x1p-2, 0x1.3p+2), V(0x1.bp+1, 0x1.2p+1, 0x1.3p+1),
+       {V(-0x1.6p+1, -0x1.2p+1, 0x1.600004p+1), V(0x1.3p+1, 0x1.1p+2, 0x1.6p+0), V(0x1.3p+3, 0x1.58p+2, -0x1.8p-1),
+        V(0x1.ep+0, 0x1.ap+1, 0x1.ep+1), V(-0x1.2fffffffp+2, -0x1p-2, 0x1.3p+2), V(0x1.bp+1, 0x1.2p+1, 0x1.3p+1),
         V(0x1.ep+2, 0x1.98p+2, 0x1.4p+0), V(0x1.cp-1, 0x1.4p+0, 0x1.cp+0)}},
       {Kind::kEdgeEdge,  // collinear edges meeting end to end
        {V(0x1p+2, 0x1.8p+1, 0x1p+0), V(0x1.cp+0, 0x1p+0, 0x1.4p+0), V(0x1.8p+2, 0x1.4p+2, 0x1p+0),
         V(0x1p+2, 0x1.8p+1, 0x1.4p+0), V(0x1p+2, 0x1.8p+1, 0x1p+0), V(0x1.ep+1, 0x1p+0, -0x1.8p-1),
         V(0x1.8p+2, 0x1.4p+2, 0x1p+0), V(0x1.fffffffffffffp+1, 0x1.7ffffffffffffp+1, -0x1.8p-1)}},
       {Kind::kVertexFace,  // a needle triangle, two vertices 4e-10 apart
-       {V(-0x1p-1, -0x1.4p+0, 0x1.ap+0), V(-0x1.dp+1, -0x1.4p-1, -0x1p-2),
-        V(0x1.2p+1, -0x1.6p+0, 0x1.8p-1), V(0x1.000000000004p+0, -0x1p+1, 0x1p+1),
-        V(-0x1p-1, -0x1.4p+0, 0x1.a0000002p+0), V(-0x1.5p+1, 0x1.8p-2, 0x1.cp+0),
-        V(0x1p-2, -0x1.3p+1, 0x1.6p+1), V(0x1p+0, -0x1p+1, 0x1p+1)}}};
+       {V(-0x1p-1, -0x1.4p+0, 0x1.ap+0), V(-0x1.dp+1, -0x1.4p-1, -0x1p-2), V(0x1.2p+1, -0x1.6p+0, 0x1.8p-1),
+        V(0x1.000000000004p+0, -0x1p+1, 0x1p+1), V(-0x1p-1, -0x1.4p+0, 0x1.a0000002p+0),
+        V(-0x1.5p+1, 0x1.8p-2, 0x1.cp+0), V(0x1p-2, -0x1.3p+1, 0x1.6p+1), V(0x1p+0, -0x1p+1, 0x1p+1)}}};
   sscc::ccd::CcdOptions options;
   options.toi_tolerance = sscc::ccd::kMinToiTolerance;
   for (const Query& q : queries) {

@@ -39,8 +39,7 @@ TEST_CASE("1e5 seeded random queries agree with the exact reference", "[kernels]
   CHECK(stages[static_cast<int>(sscc::ccd::DecidedBy::kExact)] < 100);
 }
 
-TEST_CASE("2e4 seeded near-degenerate queries agree with the exact reference",
-          "[kernels][random]") {
+TEST_CASE("2e4 seeded near-degenerate queries agree with the exact reference", "[kernels][random]") {
   std::array<int, sscc::ccd::kDecidedByCount> stages{};
   CHECK(first_disagreement(sscc::validation::near_degenerate_query, 10000, 2, stages) == "");
   // These are built to defeat the filters: the exact stage must have been exercised.

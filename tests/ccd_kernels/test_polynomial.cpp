@@ -72,8 +72,7 @@ TEST_CASE("irrational roots: isolation, signs and comparison", "[exact][polynomi
   CHECK(sscc::exact::compare(mpq_class(7071, 10000), root) < 0);
   CHECK(sscc::exact::compare(mpq_class(7072, 10000), root) > 0);
   // The same number as a root of another polynomial compares equal.
-  std::vector<RealRoot> other =
-      sscc::exact::roots_in_unit_interval(half_square * from_roots({mpq_class(9, 10)}));
+  std::vector<RealRoot> other = sscc::exact::roots_in_unit_interval(half_square * from_roots({mpq_class(9, 10)}));
   REQUIRE(other.size() == 2);
   CHECK(sscc::exact::compare(other[0], root) == 0);
   CHECK(sscc::exact::compare(other[1], root) > 0);

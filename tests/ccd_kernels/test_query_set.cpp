@@ -3,8 +3,7 @@
 #include "agreement.hpp"
 #include "query_set.hpp"
 
-TEST_CASE("the public handcrafted query set: no false negatives, no false positives",
-          "[kernels][query-set]") {
+TEST_CASE("the public handcrafted query set: no false negatives, no false positives", "[kernels][query-set]") {
   const std::string path = sscc::validation::default_query_set_path(SSCC_SOURCE_DIR);
   if (path.empty()) {
     WARN("skipped: ../shared/data/ccd-sample-queries is not beside the repository");

@@ -8,7 +8,6 @@
 using sscc::validation::Kind;
 using sscc::validation::Query;
 
-
 TEST_CASE("minimum separation never misses a sampled near approach", "[kernels][separation]") {
   std::mt19937_64 rng(7);
   int positives = 0;
@@ -20,8 +19,7 @@ TEST_CASE("minimum separation never misses a sampled near approach", "[kernels][
         sscc::ccd::CcdOptions options;
         options.minimum_separation = d;
         const auto result = sscc::validation::run_kernel(q, options);
-        INFO(sscc::validation::to_string(kind) << " query " << i << " d=" << d
-                                              << " sampled min distance " << sampled);
+        INFO(sscc::validation::to_string(kind) << " query " << i << " d=" << d << " sampled min distance " << sampled);
         if (sampled < d * (1 - 1e-9)) {
           CHECK(result.hit);
           ++positives;
@@ -47,9 +45,9 @@ TEST_CASE("minimum separation on the named cases", "[kernels][separation]") {
   }
   // Parallel edges 0.5 apart: a contact for d = 0.6, not for d = 0.4.
   using V = Eigen::Vector3d;
-  const Query parallel{Kind::kEdgeEdge,
-                       {V(0, 0, 0), V(1, 0, 0), V(0, 0.5, 0), V(1, 0.5, 0), V(0, 0, 0),
-                        V(1, 0, 0), V(0, 0.5, 0), V(1, 0.5, 0)}};
+  const Query parallel{
+      Kind::kEdgeEdge,
+      {V(0, 0, 0), V(1, 0, 0), V(0, 0.5, 0), V(1, 0.5, 0), V(0, 0, 0), V(1, 0, 0), V(0, 0.5, 0), V(1, 0.5, 0)}};
   sscc::ccd::CcdOptions options;
   options.minimum_separation = 0.6;
   CHECK(sscc::validation::run_kernel(parallel, options).hit);

@@ -17,8 +17,8 @@ bool reference_intersect(const std::array<V, 3>& a, const std::array<V, 3>& b) {
     const auto& e = side == 0 ? a : b;
     const auto& t = side == 0 ? b : a;
     for (int i = 0; i < 3; ++i) {
-      if (sscc::exact::reference_vertex_face(q(e[i]), q(t[0]), q(t[1]), q(t[2]), q(e[(i + 1) % 3]),
-                                             q(t[0]), q(t[1]), q(t[2]))) {
+      if (sscc::exact::reference_vertex_face(q(e[i]), q(t[0]), q(t[1]), q(t[2]), q(e[(i + 1) % 3]), q(t[0]), q(t[1]),
+                                             q(t[2]))) {
         return true;
       }
     }
@@ -40,8 +40,7 @@ TEST_CASE("discrete triangle-triangle intersection: named cases", "[kernels][dis
   CHECK(sscc::ccd::triangles_intersect(o, x, y, V(0.3, 0.3, -1), V(0.3, 0.3, 1), V(0.3, 0.3, 2)));
 }
 
-TEST_CASE("discrete triangle-triangle intersection against the exact reference",
-          "[kernels][discrete]") {
+TEST_CASE("discrete triangle-triangle intersection against the exact reference", "[kernels][discrete]") {
   std::mt19937_64 rng(11);
   std::uniform_int_distribution<int> grid(-2, 2);
   int hits = 0;

@@ -2,17 +2,15 @@
 
 #include <cstdio>
 #include <cstring>
-#include <limits>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include "certificate_fixtures.hpp"
 
 namespace {
 
-std::string temporary_path(const std::string& name) {
-  return std::string(SSCC_TEST_OUTPUT_DIR) + "/" + name;
-}
+std::string temporary_path(const std::string& name) { return std::string(SSCC_TEST_OUTPUT_DIR) + "/" + name; }
 
 std::string read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

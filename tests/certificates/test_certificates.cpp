@@ -129,7 +129,8 @@ TEST_CASE("certificates: the culled query reports exactly what the traditional o
     for (int step = 0; step < 4; ++step) {
       const Eigen::VectorXd q0 = sscc::test::random_scaled_coordinates(rng, 27, norm);
       const Eigen::VectorXd q1 = sscc::test::random_scaled_coordinates(rng, 27, norm);
-      for (sscc::NodeBounds bounds : {sscc::NodeBounds::kHybrid, sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
+      for (sscc::NodeBounds bounds :
+           {sscc::NodeBounds::kHybrid, sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
         sscc::SelfCcdOptions with = {};
         with.bounds = bounds;
         sscc::SelfCcdOptions without = traditional;

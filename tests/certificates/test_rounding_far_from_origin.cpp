@@ -42,8 +42,8 @@ TEST_CASE("certificates: contacts through rounding far from the origin are not c
     sscc::SelfCcdOptions traditional;
     traditional.use_certificates = false;
     // Steps from rest to just below the root radius and to points around the true contact.
-    for (double q : {root * (1 - 1e-9), root * (1 - 1e-15), std::nextafter(root, 0.0), 1.0 - 1.2e-11, 1.0 - 1e-15,
-                     1.0, 1.0 + 1e-12}) {
+    for (double q : {root * (1 - 1e-9), root * (1 - 1e-15), std::nextafter(root, 0.0), 1.0 - 1.2e-11, 1.0 - 1e-15, 1.0,
+                     1.0 + 1e-12}) {
       INFO("q = " << q);
       const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(1), q1 = Eigen::VectorXd::Constant(1, q);
       const sscc::SelfCcdReport with = s.detector.query(q0, q1);

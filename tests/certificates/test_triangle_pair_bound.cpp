@@ -169,7 +169,8 @@ TEST_CASE("1D bound: its rounding never lifts it above the true radius (parallel
         a.modes[i] = Eigen::MatrixXd::Zero(3, 1);
         b.modes[i] = -Eigen::Vector3d(s, s, 0.0);
       }
-      for (int i = 0; i < 3; ++i) b.rest[i] = (a.rest[0] + a.rest[1] + a.rest[2] + a.rest[i]) / 4.0 + Eigen::Vector3d(h, h, 0);
+      for (int i = 0; i < 3; ++i)
+        b.rest[i] = (a.rest[0] + a.rest[1] + a.rest[2] + a.rest[i]) / 4.0 + Eigen::Vector3d(h, h, 0);
       INFO("bits " << bits << " trial " << trial);
       REQUIRE(static_cast<long double>(sscc::one_dimensional_radius(a, b)) <= truth);
     }

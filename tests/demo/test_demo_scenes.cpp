@@ -51,7 +51,8 @@ TEST_CASE("the double-helix spring is one closed tube that does not touch itself
   const sscc::TriangleMesh spring = sscc::validation::double_helix_spring(shape);
   CHECK(spring.triangle_count() == 2 * shape.rings * shape.segments);
   CHECK(sscc::is_closed_manifold(spring));
-  const sscc::SubspaceModel still(spring, Eigen::MatrixXd::Zero(3 * spring.vertex_count(), 1), Eigen::VectorXd::Ones(1));
+  const sscc::SubspaceModel still(spring, Eigen::MatrixXd::Zero(3 * spring.vertex_count(), 1),
+                                  Eigen::VectorXd::Ones(1));
   const sscc::SubspaceBvh bvh(still);
   CHECK_FALSE(sscc::SelfCcd(bvh).query_discrete(Eigen::VectorXd::Zero(1)).collided());
   // The coils of the two helices interleave: at the axis' side x = coil radius, the tube

@@ -60,12 +60,15 @@ TEST_CASE("EXPERIMENTAL predicted culling: false culls counted beside the sound 
     held_truth.push_back(sscc::experimental::colliding_nodes(f.bvh, q));
     CHECK(held_truth.back() == brute_force_colliding_nodes(f.bvh, q));  // the ground truth itself
   }
-  const sscc::experimental::CullingPredictor predictor = sscc::experimental::CullingPredictor::fit(f.bvh, train_q, train_truth);
+  const sscc::experimental::CullingPredictor predictor =
+      sscc::experimental::CullingPredictor::fit(f.bvh, train_q, train_truth);
   CHECK(predictor.node_count() == static_cast<int>(f.bvh.nodes().size()));
   CHECK(predictor.feature_count() == 2 * f.model.mode_count() + 1);
 
-  const sscc::experimental::CullValidation on_training = sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, train_q, train_truth);
-  const sscc::experimental::CullValidation on_held_out = sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, held_q, held_truth);
+  const sscc::experimental::CullValidation on_training =
+      sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, train_q, train_truth);
+  const sscc::experimental::CullValidation on_held_out =
+      sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, held_q, held_truth);
   for (const sscc::experimental::CullValidation* v : {&on_training, &on_held_out}) {
     WARN((v == &on_training ? "training" : "held-out")
          << " poses: " << v->colliding_poses << " of " << v->poses << " collide, " << v->colliding
@@ -73,9 +76,9 @@ TEST_CASE("EXPERIMENTAL predicted culling: false culls counted beside the sound 
          << v->sound.false_culls << " false culls; EXPERIMENTAL (NOT CONSERVATIVE) predictor culls "
          << v->predicted.culled << " with " << v->predicted.false_culls << " false culls, "
          << v->predicted.poses_falsely_free << " colliding poses declared free");
-    CHECK(v->colliding > 0);                    // there is something to get wrong
-    CHECK(v->sound.culled > 0);                 // the certificates do cull
-    CHECK(v->sound.false_culls == 0);           // and never wrongly
+    CHECK(v->colliding > 0);           // there is something to get wrong
+    CHECK(v->sound.culled > 0);        // the certificates do cull
+    CHECK(v->sound.false_culls == 0);  // and never wrongly
     CHECK(v->sound.poses_falsely_free == 0);
     CHECK(v->predicted.false_culls <= v->predicted.culled);
   }
@@ -101,12 +104,15 @@ TEST_CASE("the culling predictor and its validation refuse inputs of the wrong s
   const std::vector<std::vector<char>> truth = {std::vector<char>(f.bvh.nodes().size(), 0)};
   CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, {}, {}), Catch::Contains("no training poses"));
   CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, q, {}), Catch::Contains("ground truths"));
-  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, {Eigen::VectorXd::Zero(2)}, truth), Catch::Contains("finite"));
-  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, q, {std::vector<char>(2, 0)}), Catch::Contains("per node"));
+  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, {Eigen::VectorXd::Zero(2)}, truth),
+                    Catch::Contains("finite"));
+  CHECK_THROWS_WITH(sscc::experimental::CullingPredictor::fit(f.bvh, q, {std::vector<char>(2, 0)}),
+                    Catch::Contains("per node"));
   const sscc::experimental::CullingPredictor predictor = sscc::experimental::CullingPredictor::fit(f.bvh, q, truth);
   CHECK_THROWS_WITH(predictor.scores(Eigen::VectorXd::Zero(5)), Catch::Contains("finite coordinates"));
   const sscc::SubspaceBvh other_tree(f.model, 2);  // another k-means seed: another hierarchy
   CHECK_THROWS_WITH(sscc::experimental::validate_culling(other_tree, f.certificates, predictor, q, truth),
                     Catch::Contains("another"));
-  CHECK_THROWS_WITH(sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, q, {}), Catch::Contains("ground truths"));
+  CHECK_THROWS_WITH(sscc::experimental::validate_culling(f.bvh, f.certificates, predictor, q, {}),
+                    Catch::Contains("ground truths"));
 }

@@ -22,7 +22,8 @@ double sampled_distance(const Triangle3& a, const Triangle3& b, int grid) {
       const Eigen::Vector3d pa = at(a, Eigen::Vector3d(double(i), double(j), double(grid - i - j)) / grid);
       for (int k = 0; k <= grid; ++k) {
         for (int l = 0; k + l <= grid; ++l) {
-          best = std::min(best, (pa - at(b, Eigen::Vector3d(double(k), double(l), double(grid - k - l)) / grid)).norm());
+          best =
+              std::min(best, (pa - at(b, Eigen::Vector3d(double(k), double(l), double(grid - k - l)) / grid)).norm());
         }
       }
     }
@@ -32,8 +33,7 @@ double sampled_distance(const Triangle3& a, const Triangle3& b, int grid) {
 
 }  // namespace
 
-TEST_CASE("triangle distance: achieved by the returned points and no larger than any sampled pair",
-          "[geometry]") {
+TEST_CASE("triangle distance: achieved by the returned points and no larger than any sampled pair", "[geometry]") {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> normal;
   const auto random_point = [&](double spread) {

@@ -129,9 +129,8 @@ TEST_CASE("PLY: ASCII and both binary byte orders give the same mesh", "[mesh]")
     }
     const float w = 7;
     put(&w, 4);
-    const std::string file = std::string("ply\nformat ") +
-                             (big ? "binary_big_endian" : "binary_little_endian") + " 1.0\n" +
-                             header_tail + data;
+    const std::string file = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+                             " 1.0\n" + header_tail + data;
     const sscc::TriangleMesh mesh = sscc::read_mesh(scratch_file(big ? "b.ply" : "l.ply", file));
     CHECK(mesh.vertices() == reference.vertices());
     CHECK(mesh.triangles() == reference.triangles());
@@ -141,8 +140,7 @@ TEST_CASE("PLY: ASCII and both binary byte orders give the same mesh", "[mesh]")
 
 TEST_CASE("zero-area triangles are reported", "[mesh]") {
   sscc::MeshReadReport report;
-  sscc::read_mesh(scratch_file("flat.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n3 0 1 2\n3 0 1 3\n"),
-                  &report);
+  sscc::read_mesh(scratch_file("flat.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n3 0 1 2\n3 0 1 3\n"), &report);
   REQUIRE(report.zero_area_triangles.size() == 1);
   CHECK(report.zero_area_triangles[0] == 0);
   CHECK(report.summary() == "0 polygons triangulated, 1 zero-area triangle, 0 duplicate triangles");
@@ -153,20 +151,19 @@ TEST_CASE("bad files are refused with the file, the line and the problem", "[mes
              Catch::Contains("nan.off:4") && Catch::Contains("not a finite double"));
   CHECK_THAT(error_of("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
              Catch::Contains("range.off:6") && Catch::Contains("outside [0, 3)"));
-  CHECK_THAT(error_of("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
-             Catch::Contains("file ends after 2 of 3 vertices"));
+  CHECK_THAT(error_of("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"), Catch::Contains("file ends after 2 of 3 vertices"));
   CHECK_THAT(error_of("line.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n"),
              Catch::Contains("at least three vertices"));
   CHECK_THAT(error_of("repeat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"),
              Catch::Contains("repeat.obj:4") && Catch::Contains("repeats a vertex"));
-  CHECK_THAT(error_of("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"),
-             Catch::Contains("start at 1"));
+  CHECK_THAT(error_of("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"), Catch::Contains("start at 1"));
   CHECK_THAT(error_of("points.obj", "v 0 0 0\nv 1 0 0\n"), Catch::Contains("no faces"));
   CHECK_THAT(error_of("text.off", "hello world\n"), Catch::Contains("expected the header 'OFF'"));
   CHECK_THAT(error_of("mesh.stl", "solid\n"), Catch::Contains("unknown mesh format"));
   CHECK_THAT(error_of("mesh", "OFF\n"), Catch::Contains("no file extension"));
-  CHECK_THAT(error_of("cut.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2\n"
-                                 "property float x\nproperty float y\nproperty float z\nend_header\nab"),
+  CHECK_THAT(error_of("cut.ply",
+                      "ply\nformat binary_little_endian 1.0\nelement vertex 2\n"
+                      "property float x\nproperty float y\nproperty float z\nend_header\nab"),
              Catch::Contains("binary data ends early"));
   CHECK_THAT(error_of("word.obj", "v 0 zero 0\n"), Catch::Contains("'zero' is not a number"));
   CHECK_THROWS_WITH(sscc::read_mesh("/nonexistent/x.off"), Catch::Contains("cannot open"));
@@ -183,15 +180,16 @@ TEST_CASE("hostile files end in an error, not a crash or a hang", "[mesh]") {
   CHECK_THAT(error_of("trunc.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n"), Catch::Contains("out of range"));
   CHECK_THAT(error_of("count.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n9223372036854775807 0 1 2\n"),
              Catch::Contains("out of range"));
-  const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                               "property float z\n";
+  const std::string ply_head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\n";
   CHECK_THAT(error_of("frac.ply", ply_head + "element face 1\nproperty list uchar float vertex_indices\n"
-                                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n"),
+                                             "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n"),
              Catch::Contains("not an index"));
   // An element without properties has nothing to read, however large its count.
   CHECK(sscc::read_mesh(scratch_file("empty.ply", ply_head + "element nothing 9223372036854775807\n"
-                                                   "element face 1\nproperty list uchar int vertex_indices\n"
-                                                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+                                                             "element face 1\nproperty list uchar int vertex_indices\n"
+                                                             "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
             .triangle_count() == 1);
 }
 
@@ -224,6 +222,5 @@ TEST_CASE("one polygon of 100k vertices reads (and a repeat in it is found) in n
   CHECK(mesh.triangle_count() == kCorners - 2);
   CHECK(report.polygons_triangulated == 1);
   CHECK_THAT(error_of("disc_repeat.obj", obj.str() + face.str() + " 1\n"),
-             Catch::Contains("disc_repeat.obj:" + std::to_string(kCorners + 1)) &&
-                 Catch::Contains("repeats a vertex"));
+             Catch::Contains("disc_repeat.obj:" + std::to_string(kCorners + 1)) && Catch::Contains("repeats a vertex"));
 }

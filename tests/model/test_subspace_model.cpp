@@ -14,8 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 sscc::TriangleMesh tetrahedron() {
-  return sscc::TriangleMesh({{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0, 3}},
-                            {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
+  return sscc::TriangleMesh({{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0, 3}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
 }
 
 std::string scratch(const std::string& name) {
@@ -58,8 +57,7 @@ TEST_CASE("bad bases, weights and coordinates are refused with a message", "[mod
   const sscc::SubspaceModel model(mesh, Eigen::MatrixXd::Ones(12, 2), Eigen::Vector2d(1, 1));
   CHECK_THROWS_WITH(model.scaled_coordinates(Eigen::Vector3d(1, 2, 3)),
                     Catch::Contains("q has 3 coordinates") && Catch::Contains("2 modes"));
-  CHECK_THROWS_WITH(model.scaled_coordinates(Eigen::Vector2d(1, std::nan(""))),
-                    Catch::Contains("q[1] is not finite"));
+  CHECK_THROWS_WITH(model.scaled_coordinates(Eigen::Vector2d(1, std::nan(""))), Catch::Contains("q[1] is not finite"));
 }
 
 TEST_CASE("Vega .U files and text matrices round-trip; bad files are refused", "[model]") {
@@ -121,8 +119,8 @@ TEST_CASE("polynomial modes: linear then quadratic, scaled to the bounding-box d
     CHECK(axes_moved == 1);
   }
   // Mode 1 (x moved by y) is linear in y: its values are an affine function of rest y.
-  const double a = u(3 * 0 + 0, 1);  // y = 0
-  const double b = u(3 * 2 + 0, 1);  // y = 1
+  const double a = u(3 * 0 + 0, 1);     // y = 0
+  const double b = u(3 * 2 + 0, 1);     // y = 1
   CHECK(u(3 * 1 + 0, 1) == Approx(a));  // vertex 1 also has y = 0
   CHECK(b != Approx(a));
   CHECK_THROWS_WITH(sscc::polynomial_basis(mesh, 28), Catch::Contains("1 to 27"));

@@ -11,8 +11,8 @@
 
 namespace {
 
-using sscc::detail::DirectedEdge;
 using Eigen::Vector3d;
+using sscc::detail::DirectedEdge;
 
 std::vector<DirectedEdge> edges_of(const std::vector<sscc::Triangle>& triangles) {
   std::vector<DirectedEdge> edges;
@@ -101,7 +101,8 @@ TEST_CASE("contour: a loop winding twice, a reversed loop or a non-star loop is 
   // A C shape: its vertex mean lies outside the region the whole loop can see.
   std::vector<Vector3d> c_shape;
   for (int i = 0; i <= 10; ++i) c_shape.emplace_back(std::cos(0.2 + 5.9 * i / 10), std::sin(0.2 + 5.9 * i / 10), 0);
-  for (int i = 10; i >= 0; --i) c_shape.emplace_back(0.8 * std::cos(0.2 + 5.9 * i / 10), 0.8 * std::sin(0.2 + 5.9 * i / 10), 0);
+  for (int i = 10; i >= 0; --i)
+    c_shape.emplace_back(0.8 * std::cos(0.2 + 5.9 * i / 10), 0.8 * std::sin(0.2 + 5.9 * i / 10), 0);
   CHECK_FALSE(sscc::detail::winds_once_star_shaped(up, cycle(22), c_shape, c_shape));
 }
 

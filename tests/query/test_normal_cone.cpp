@@ -52,7 +52,8 @@ std::array<Vector3d, 6> random_moving_triangle(std::mt19937_64& rng, int kind) {
   for (int end = 0; end < 2; ++end) {
     const Vector3d a = random_vector(), b = random_vector();
     Vector3d c = random_vector();
-    if (kind == 1) c = a + unit(rng) * (b - a) + std::pow(10.0, -4.0 - 12.0 * (unit(rng) + 1.0) / 2.0) * random_vector();
+    if (kind == 1)
+      c = a + unit(rng) * (b - a) + std::pow(10.0, -4.0 - 12.0 * (unit(rng) + 1.0) / 2.0) * random_vector();
     x[3 * end + 0] = offset + scale * a;
     x[3 * end + 1] = offset + scale * b;
     x[3 * end + 2] = offset + scale * c;
@@ -75,7 +76,8 @@ TEST_CASE("normal cone: a certified positive normal is positive in exact arithme
     const sscc::detail::BernsteinNormals n = sscc::detail::bernstein_normals(x[0], x[1], x[2], x[3], x[4], x[5]);
     // Directions along the normal, and nearly orthogonal to it (where the sign is fragile).
     Vector3d d = n.value[0].normalized();
-    if (trial % 3 == 1) d = (d.cross(Vector3d(unit(rng), unit(rng), unit(rng))).normalized() + 1e-9 * unit(rng) * d).normalized();
+    if (trial % 3 == 1)
+      d = (d.cross(Vector3d(unit(rng), unit(rng), unit(rng))).normalized() + 1e-9 * unit(rng) * d).normalized();
     if (trial % 3 == 2) d = Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
     const std::array<mpq_class, 3> coefficients = exact_coefficients(d, x);
     const bool all_positive = coefficients[0] > 0 && coefficients[1] > 0 && coefficients[2] > 0;
@@ -113,8 +115,8 @@ TEST_CASE("normal cone: certified signs of triple products agree with exact arit
     const Vector3d w = d.cross(Vector3d(unit(rng), unit(rng), unit(rng)));
     const Vector3d c = (trial % 2 ? 1e5 : 1.0) * Vector3d(unit(rng), unit(rng), unit(rng));
     // Points near the plane of d and w through c, where the sign is fragile.
-    const Vector3d p = c + unit(rng) * d + unit(rng) * w + std::pow(10.0, -3.0 - 14.0 * (unit(rng) + 1.0) / 2.0) *
-                                                               d.cross(w).normalized() * unit(rng);
+    const Vector3d p = c + unit(rng) * d + unit(rng) * w +
+                       std::pow(10.0, -3.0 - 14.0 * (unit(rng) + 1.0) / 2.0) * d.cross(w).normalized() * unit(rng);
     const int sign = sscc::detail::certified_sign_of_triple(d, w, p, c);
     const mpq_class value = dot(exact(d), cross(exact(w), minus(exact(p), exact(c))));
     INFO("trial " << trial);

@@ -30,7 +30,8 @@ Eigen::VectorXd squeeze(double amount) {
 
 }  // namespace
 
-TEST_CASE("ownership: detectors built from temporaries answer like detectors built from kept objects", "[query][ownership]") {
+TEST_CASE("ownership: detectors built from temporaries answer like detectors built from kept objects",
+          "[query][ownership]") {
   const sscc::TriangleMesh mesh = sscc::test::parallel_sheets(4, 0.3);
   const sscc::SubspaceModel model(mesh, sscc::polynomial_basis(mesh, 9), Eigen::VectorXd::Ones(9));
   const sscc::SubspaceBvh bvh(model);

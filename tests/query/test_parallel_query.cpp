@@ -105,8 +105,8 @@ TEST_CASE("parallel self-CCD: with certificates, steps around the root radius", 
       const Eigen::VectorXd q0 = sscc::test::random_scaled_coordinates(rng, 27, factor * root);
       const Eigen::VectorXd q1 = sscc::test::random_scaled_coordinates(rng, 27, factor * root);
       steps.emplace_back(q0, q1);
-      root_certified += ccd.query(q0, q1, with(sscc::SelfCcdMode::kAllContacts, sscc::NodeBounds::kHybrid, 4))
-                            .stats.root_certified;
+      root_certified +=
+          ccd.query(q0, q1, with(sscc::SelfCcdMode::kAllContacts, sscc::NodeBounds::kHybrid, 4)).stats.root_certified;
     }
   }
   CHECK(root_certified == 3);  // the steps at half the root radius, on four threads too
@@ -144,8 +144,8 @@ TEST_CASE("parallel self-CCD: concurrent callers of one detector, each on severa
     for (std::size_t i = begin; i < steps.size(); i += 2) {
       all[i] = ccd.query(steps[i].first, steps[i].second,
                          with(sscc::SelfCcdMode::kAllContacts, sscc::NodeBounds::kHybrid, 2));
-      any[i] = ccd.query(steps[i].first, steps[i].second,
-                         with(sscc::SelfCcdMode::kAnyHit, sscc::NodeBounds::kHybrid, 3));
+      any[i] =
+          ccd.query(steps[i].first, steps[i].second, with(sscc::SelfCcdMode::kAnyHit, sscc::NodeBounds::kHybrid, 3));
     }
   };
   std::thread other(worker, 1);

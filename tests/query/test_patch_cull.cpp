@@ -70,7 +70,8 @@ Surface spiral_ramp(double pitch) {
 std::vector<Keyframes> cases() {
   std::vector<Keyframes> all;
   all.push_back({"folding sheet", 16, 5, false, false, {}});
-  for (double degrees : {0.0, 45.0, 100.0, 150.0, 175.0, 180.0, 185.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  for (double degrees : {0.0, 45.0, 100.0, 150.0, 175.0, 180.0, 185.0})
+    all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
   all.push_back({"pinched torus", 40, 10, true, true, {}});
   for (double pinch : {0.0, 0.6, 0.95, 1.0, 1.05}) all.back().shapes.push_back(pinched_torus(pinch));
   all.push_back({"helix tube", 60, 8, false, true, {}});
@@ -142,7 +143,7 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
       ++steps;
     }
   }
-  CHECK(culled > 20);                  // the cones did cull
+  CHECK(culled > 20);                   // the cones did cull
   CHECK(colliding_steps >= steps / 3);  // and the steps do collide
 }
 
@@ -230,7 +231,8 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
           for (int j = std::max(begin2, begin == begin2 ? i + 1 : begin2); j < end2; ++j) {
             const int a = bvh.triangle_order()[i], b = bvh.triangle_order()[j];
             if (mesh.adjacent(a, b)) continue;
-            if (sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]) <= 1.0) {
+            if (sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]) <=
+                1.0) {
               return false;
             }
           }
@@ -241,15 +243,18 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
       for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
         if (!cull.cannot_self_touch(n)) continue;
         ++accepted_nodes;
-        REQUIRE(no_contact(nodes[n].triangle_begin, nodes[n].triangle_end, nodes[n].triangle_begin, nodes[n].triangle_end));
+        REQUIRE(
+            no_contact(nodes[n].triangle_begin, nodes[n].triangle_end, nodes[n].triangle_begin, nodes[n].triangle_end));
       }
       for (int a = 0; a < static_cast<int>(nodes.size()); ++a) {
         for (int b = a + 1; b < static_cast<int>(nodes.size()); ++b) {
-          const bool disjoint = nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+          const bool disjoint =
+              nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
           if (!disjoint || !cull.cannot_touch(a, b)) continue;
           ++accepted_pairs;
           // Pairs within each node are the node's own test; here the pairs across.
-          REQUIRE(no_contact(nodes[a].triangle_begin, nodes[a].triangle_end, nodes[b].triangle_begin, nodes[b].triangle_end));
+          REQUIRE(no_contact(nodes[a].triangle_begin, nodes[a].triangle_end, nodes[b].triangle_begin,
+                             nodes[b].triangle_end));
         }
       }
     }

@@ -30,7 +30,8 @@ Eigen::VectorXd random_q(std::mt19937_64& rng, double amplitude) {
 /// Independent of the library's leaf code: every non-adjacent triangle pair, all 15 features
 /// through the kernels directly, the earliest time per pair.
 std::vector<sscc::TrianglePairContact> brute_force(const Fixture& f, const Eigen::VectorXd& q0,
-                                                   const Eigen::VectorXd& q1, const sscc::ccd::CcdOptions& options = {}) {
+                                                   const Eigen::VectorXd& q1,
+                                                   const sscc::ccd::CcdOptions& options = {}) {
   const std::vector<Eigen::Vector3d> x0 = f.model.deformed_positions(q0);
   const std::vector<Eigen::Vector3d> x1 = f.model.deformed_positions(q1);
   std::vector<sscc::TrianglePairContact> pairs;

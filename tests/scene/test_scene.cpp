@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <random>
-#include <tuple>
 #include <thread>
+#include <tuple>
 
 #include "brute_force.hpp"
 #include "sscc/certificates/certificates.hpp"
@@ -63,7 +63,8 @@ std::vector<sscc::InterObjectContact> brute_force(const sscc::SubspaceModel& mod
         for (int tb = 0; tb < model.mesh().triangle_count(); ++tb) {
           sscc::Triangle shifted = model.mesh().triangles()[tb];
           for (int& v : shifted) v += n;
-          const double toi = sscc::validation::triangle_pair_first_contact(x0, x1, model.mesh().triangles()[ta], shifted);
+          const double toi =
+              sscc::validation::triangle_pair_first_contact(x0, x1, model.mesh().triangles()[ta], shifted);
           if (toi <= 1.0) contacts.push_back({int(a), ta, int(b), tb, toi});
         }
       }
@@ -297,8 +298,8 @@ TEST_CASE("scene: reports equal on every thread count, in every mode, with certi
       for (int i : {0, 2}) steps[i].q1 = steps[i].q0, steps[i].frame1 = steps[i].frame0;
       steps[1].q0 = 3.0 * steps[1].q0;
     }
-    for (sscc::SelfCcdMode mode : {sscc::SelfCcdMode::kAllContacts, sscc::SelfCcdMode::kEarliest,
-                                   sscc::SelfCcdMode::kAnyHit}) {
+    for (sscc::SelfCcdMode mode :
+         {sscc::SelfCcdMode::kAllContacts, sscc::SelfCcdMode::kEarliest, sscc::SelfCcdMode::kAnyHit}) {
       for (bool use_certificates : {true, false}) {
         sscc::SceneOptions options;
         options.mode = mode;

@@ -7,8 +7,8 @@
 // the minimum from above.
 #pragma once
 
-#include <Eigen/QR>
 #include <Eigen/Core>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>

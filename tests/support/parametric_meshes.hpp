@@ -46,7 +46,8 @@ inline std::vector<Triangle> grid_triangles(int nu, int nv, bool wrap_u, bool wr
 
 /// A model whose rest shape is keyframes[0] and whose mode k - 1 moves it to keyframes[k]
 /// (weights 1): q = e_{k-1} is keyframe k, q = 0 keyframe 0.
-inline SubspaceModel keyframe_model(std::vector<Triangle> triangles, const std::vector<std::vector<Eigen::Vector3d>>& keyframes) {
+inline SubspaceModel keyframe_model(std::vector<Triangle> triangles,
+                                    const std::vector<std::vector<Eigen::Vector3d>>& keyframes) {
   const int vertices = static_cast<int>(keyframes[0].size());
   const int modes = static_cast<int>(keyframes.size()) - 1;
   Eigen::MatrixXd basis(3 * vertices, modes);

@@ -9,8 +9,8 @@
 #include <sstream>
 #include <vector>
 
-#include "demo/scene_run.hpp"
 #include "degenerate_benchmark.hpp"
+#include "demo/scene_run.hpp"
 #include "kernel_validation.hpp"
 #include "plot.hpp"
 
@@ -32,8 +32,8 @@ std::string seconds_text(double s) { return s >= 120 ? format("%.1f min", s / 60
 std::string table1_row(const std::string& name, const SceneRun& run, const std::string& dynamics) {
   const SubspaceModel& m = *run.assets.model;
   std::ostringstream row;
-  row << "| **ours: " << name << "** | " << m.mesh().triangle_count() << " | " << m.mode_count() << " | "
-      << run.objects << " | " << dynamics << " | " << seconds_text(run.assets.certificate_seconds) << " | "
+  row << "| **ours: " << name << "** | " << m.mesh().triangle_count() << " | " << m.mode_count() << " | " << run.objects
+      << " | " << dynamics << " | " << seconds_text(run.assets.certificate_seconds) << " | "
       << format("%.1f ms", run.traditional.mean()) << " | " << format("%.2f ms", run.sscc.mean()) << " | "
       << format("%.1fx", run.speedup()) << " | " << run.sscc.colliding_steps << "/" << run.steps << " |\n";
   return row.str();
@@ -44,10 +44,10 @@ std::string thread_row(const std::string& name, const SceneRun& run) {
   if (run.sscc_one_thread.ms.empty()) return "";
   std::ostringstream row;
   row << "| " << name << " | " << run.threads << " | " << format("%.2f ms", run.sscc_one_thread.mean()) << " | "
-      << format("%.2f ms", run.sscc.mean()) << " | " << format("%.2fx", run.thread_speedup(run.sscc_one_thread, run.sscc))
-      << " | " << format("%.1f ms", run.traditional_one_thread.mean()) << " | "
-      << format("%.1f ms", run.traditional.mean()) << " | "
-      << format("%.2fx", run.thread_speedup(run.traditional_one_thread, run.traditional)) << " | "
+      << format("%.2f ms", run.sscc.mean()) << " | "
+      << format("%.2fx", run.thread_speedup(run.sscc_one_thread, run.sscc)) << " | "
+      << format("%.1f ms", run.traditional_one_thread.mean()) << " | " << format("%.1f ms", run.traditional.mean())
+      << " | " << format("%.2fx", run.thread_speedup(run.traditional_one_thread, run.traditional)) << " | "
       << run.identical_thread_steps << "/" << run.steps << " |\n";
   return row.str();
 }
@@ -121,10 +121,22 @@ void epsilon_plot(const std::vector<EpsilonRow>& rows, double traditional_self_m
   }
   file.close();
   Figure figure{dir + "/bench_epsilon.png", 1100, 450, {}};
-  figure.panels.push_back({"Precomputation (16-bunny model)", "certificate epsilon", "s", "", true, false, "top left",
+  figure.panels.push_back({"Precomputation (16-bunny model)",
+                           "certificate epsilon",
+                           "s",
+                           "",
+                           true,
+                           false,
+                           "top left",
                            {{csv, 1, "2", "precompute time"}}});
-  figure.panels.push_back({"Self-collision speedup over traditional (same run)", "certificate epsilon", "x", "", true,
-                           false, "top left", {{csv, 1, "6", "speedup"}}});
+  figure.panels.push_back({"Self-collision speedup over traditional (same run)",
+                           "certificate epsilon",
+                           "x",
+                           "",
+                           true,
+                           false,
+                           "top left",
+                           {{csv, 1, "6", "speedup"}}});
   render_figure(figure, progress);
 }
 
@@ -275,8 +287,9 @@ long run_bench(const BenchOptions& o, std::ostream& out, std::ostream& progress)
   }
   std::ofstream(o.output_dir + "/bench.md") << md.str();
   out << md.str();
-  long disagreements = self_ccd_disagreements + (bunnies.steps - bunnies.identical_steps) + (bunnies.steps - bunnies.identical_discrete_steps) +
-                       (spring.steps - spring.identical_steps) + (dragon.steps - dragon.identical_steps);
+  long disagreements = self_ccd_disagreements + (bunnies.steps - bunnies.identical_steps) +
+                       (bunnies.steps - bunnies.identical_discrete_steps) + (spring.steps - spring.identical_steps) +
+                       (dragon.steps - dragon.identical_steps);
   for (const EpsilonRow& r : epsilons) disagreements += !r.identical;
   for (const DegenerateSetTiming& t : degenerate) disagreements += t.disagreements;
   out << "\nbench: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()

@@ -79,13 +79,12 @@ std::string self_ccd_table_markdown(const std::vector<SelfCcdTableRow>& rows) {
         "node tests (trad / cones) | triangle pairs (trad / cones) | colliding | identical |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SelfCcdTableRow& r : rows) {
-    md << "| " << r.mesh << " | " << r.triangles << " | " << r.amplitude << " | "
-       << format("%.2f ms", r.traditional_ms) << " | " << format("%.2f ms", r.cones_ms) << " | "
-       << format("%.1f ms", r.fcl_ms) << " | " << format("%.2fx", r.traditional_ms / r.cones_ms) << " | "
-       << format("%.1fx", r.fcl_ms / r.cones_ms) << " | " << format("%.0f", r.traditional_nodes) << " / "
-       << format("%.0f", r.cones_nodes) << " | " << format("%.0f", r.traditional_pairs) << " / "
-       << format("%.0f", r.cones_pairs) << " | " << r.colliding_steps << " | " << (r.identical ? "yes" : "no")
-       << " |\n";
+    md << "| " << r.mesh << " | " << r.triangles << " | " << r.amplitude << " | " << format("%.2f ms", r.traditional_ms)
+       << " | " << format("%.2f ms", r.cones_ms) << " | " << format("%.1f ms", r.fcl_ms) << " | "
+       << format("%.2fx", r.traditional_ms / r.cones_ms) << " | " << format("%.1fx", r.fcl_ms / r.cones_ms) << " | "
+       << format("%.0f", r.traditional_nodes) << " / " << format("%.0f", r.cones_nodes) << " | "
+       << format("%.0f", r.traditional_pairs) << " / " << format("%.0f", r.cones_pairs) << " | " << r.colliding_steps
+       << " | " << (r.identical ? "yes" : "no") << " |\n";
   }
   return md.str();
 }

@@ -1,10 +1,10 @@
 // The sscc command-line tool: a thin shell over the library and its validation programs.
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <initializer_list>
 #include <iostream>
 #include <map>
 #include <set>
@@ -170,13 +170,13 @@ struct Flags {
     const std::string& value = text(flag);
     try {
       std::size_t used = 0;
-      const double v = std::is_integral<Number>::value ? static_cast<double>(std::stol(value, &used))
-                                                       : std::stod(value, &used);
+      const double v =
+          std::is_integral<Number>::value ? static_cast<double>(std::stol(value, &used)) : std::stod(value, &used);
       if (used != value.size() || !(v >= 0.0)) throw std::invalid_argument(value);
       return static_cast<Number>(v);
     } catch (const std::exception&) {
-      usage_error(flag + " expects a non-negative " +
-                  (std::is_integral<Number>::value ? "integer" : "number") + ", got '" + value + "'");
+      usage_error(flag + " expects a non-negative " + (std::is_integral<Number>::value ? "integer" : "number") +
+                  ", got '" + value + "'");
     }
   }
 };
@@ -211,7 +211,8 @@ int run_report(const Options& options, bool quiet, Report report, const std::str
 
 int run_kernels(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(
-      args, {"--queries", "--random", "--seed", "--output", "--repeats", "--search-slow", "--exponent-range"}, "kernels");
+      args, {"--queries", "--random", "--seed", "--output", "--repeats", "--search-slow", "--exponent-range"},
+      "kernels");
   sscc::validation::KernelValidationOptions options;
   if (flags.has("--queries")) options.queries_dir = flags.text("--queries");
   if (flags.has("--random")) options.random = flags.number<long>("--random");
@@ -273,10 +274,9 @@ std::vector<double> number_list(const std::string& flag, const std::string& list
 }
 
 int run_certificate_sweep(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(args,
-                                  {"--mesh", "--basis", "--weights", "--epsilons", "--steps", "--amplitude",
-                                   "--burst", "--seed", "--output"},
-                                  "certificates");
+  const Flags flags = parse_flags(
+      args, {"--mesh", "--basis", "--weights", "--epsilons", "--steps", "--amplitude", "--burst", "--seed", "--output"},
+      "certificates");
   if (!flags.has("--mesh")) usage_error("certificates needs --mesh FILE");
   sscc::validation::CertificateSweepOptions options;
   options.model = model_source(flags);
@@ -299,12 +299,12 @@ void pca_options(const Flags& flags, sscc::PcaOptions& pca) {
 }
 
 int run_basis(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(args,
-                                  {"--mesh", "--method", "--modes", "--scaling", "--input", "--youngs", "--poisson",
-                                   "--density", "--volume", "--voxel-resolution", "--tetgen-max-volume",
-                                   "--filter-ratio", "--output", "--weights-output", "--poses", "--variance",
-                                   "--mean-output"},
-                                  "basis");
+  const Flags flags =
+      parse_flags(args,
+                  {"--mesh", "--method", "--modes", "--scaling", "--input", "--youngs", "--poisson", "--density",
+                   "--volume", "--voxel-resolution", "--tetgen-max-volume", "--filter-ratio", "--output",
+                   "--weights-output", "--poses", "--variance", "--mean-output"},
+                  "basis");
   if (!flags.has("--mesh")) usage_error("basis needs --mesh FILE");
   if (!flags.has("--output")) usage_error("basis needs --output FILE.U");
   sscc::validation::BasisCommandOptions options;
@@ -331,7 +331,8 @@ int run_basis(const std::vector<std::string>& args) {
   if (flags.has("--poisson")) options.elastic.material.poisson_ratio = flags.real("--poisson");
   if (flags.has("--density")) options.elastic.material.density = flags.real("--density");
   if (flags.has("--volume")) options.elastic.volume.method = sscc::parse_volume_method(flags.text("--volume"));
-  if (flags.has("--voxel-resolution")) options.elastic.volume.voxel_resolution = flags.number<int>("--voxel-resolution");
+  if (flags.has("--voxel-resolution"))
+    options.elastic.volume.voxel_resolution = flags.number<int>("--voxel-resolution");
   if (flags.has("--tetgen-max-volume")) {
     options.elastic.volume.tetgen_max_volume = flags.number<double>("--tetgen-max-volume");
   }
@@ -340,8 +341,8 @@ int run_basis(const std::vector<std::string>& args) {
 }
 
 /// The scene flags shared by demo and bench.
-const std::set<std::string> kSceneFlags{"--scene", "--mesh",      "--basis",  "--modes",   "--objects",
-                                        "--steps", "--dt",        "--seed",   "--fcl-steps", "--damping",
+const std::set<std::string> kSceneFlags{"--scene",  "--mesh",    "--basis",   "--modes",     "--objects",
+                                        "--steps",  "--dt",      "--seed",    "--fcl-steps", "--damping",
                                         "--youngs", "--poisson", "--density", "--cache"};
 
 void scene_run_options(const Flags& flags, sscc::validation::SceneRunOptions& o) {
@@ -416,8 +417,7 @@ int run_decimate(const std::vector<std::string>& args) {
 int run_poses(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(args,
                                   {"--mesh", "--poses", "--held-out", "--seed", "--twist", "--bend", "--amplitude",
-                                   "--variance", "--modes", "--key-radius", "--greedy", "--epsilon",
-                                   "--global-scale"},
+                                   "--variance", "--modes", "--key-radius", "--greedy", "--epsilon", "--global-scale"},
                                   "poses");
   if (!flags.has("--mesh")) usage_error("poses needs --mesh FILE");
   sscc::validation::PosesCommandOptions options;

@@ -34,8 +34,8 @@ std::string basis_key(const TriangleMesh& mesh, const DemoAssetOptions& o) {
   for (const auto& t : mesh.triangles()) text << ' ' << t[0] << ' ' << t[1] << ' ' << t[2];
   std::ostringstream key;
   key << "sscc demo basis v1 mesh " << std::hash<std::string>{}(text.str()) << ' ' << o.basis_kind << " modes "
-      << o.modes << " E "
-      << o.material.youngs_modulus << " nu " << o.material.poisson_ratio << " rho " << o.material.density;
+      << o.modes << " E " << o.material.youngs_modulus << " nu " << o.material.poisson_ratio << " rho "
+      << o.material.density;
   return key.str();
 }
 
@@ -100,8 +100,8 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
       write_weights(default_weights_path(basis_path), weights);
       std::ofstream(key_path) << key;
       assets.basis_seconds = seconds_since(start);
-      progress << "demo: basis done in " << assets.basis_seconds << " s, lowest frequency "
-               << made.frequencies_hz[0] << " Hz\n";
+      progress << "demo: basis done in " << assets.basis_seconds << " s, lowest frequency " << made.frequencies_hz[0]
+               << " Hz\n";
     }
   }
   assets.model = std::make_unique<SubspaceModel>(std::move(mesh), basis, weights);
@@ -119,8 +119,8 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
   if (!assets.certificates) {
     progress << "demo: precomputing certificates (" << why << ")\n";
     const auto start = std::chrono::steady_clock::now();
-    assets.certificates = std::make_unique<Certificates>(
-        Certificates::precompute(*assets.bvh, {}, [&](int done, int levels) {
+    assets.certificates =
+        std::make_unique<Certificates>(Certificates::precompute(*assets.bvh, {}, [&](int done, int levels) {
           progress << "demo: certificates: level " << done << "/" << levels << " done\n" << std::flush;
         }));
     fs::create_directories(o.cache_dir);

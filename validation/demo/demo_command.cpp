@@ -49,8 +49,8 @@ void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Ce
   while (std::getline(in, line)) {
     int level = 0, nodes = 0;
     double lo = 0, med = 0, hi = 0;
-    if (std::sscanf(line.c_str(), "level %d: nodes=%d min_radius=%lf median_radius=%lf max_radius=%lf", &level,
-                    &nodes, &lo, &med, &hi) == 5) {
+    if (std::sscanf(line.c_str(), "level %d: nodes=%d min_radius=%lf median_radius=%lf max_radius=%lf", &level, &nodes,
+                    &lo, &med, &hi) == 5) {
       file << level << ',' << lo << ',' << med << ',' << hi << '\n';
     }
   }
@@ -75,16 +75,18 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
   write_radius_plot(demo, *run.assets.bvh, *run.assets.certificates, progress);
 
   char line[512];
-  out << "\nscene " << run.scene << ": " << run.objects << " objects, " << run.steps << " steps of " << run.dt
-      << " s, " << model.mesh().triangle_count() << " triangles and " << model.mode_count() << " modes each\n\n";
-  out << "| method | mean ms/step | median ms/step | max ms/step | colliding steps | self pairs | inter-object pairs |\n"
+  out << "\nscene " << run.scene << ": " << run.objects << " objects, " << run.steps << " steps of " << run.dt << " s, "
+      << model.mesh().triangle_count() << " triangles and " << model.mode_count() << " modes each\n\n";
+  out << "| method | mean ms/step | median ms/step | max ms/step | colliding steps | self pairs | inter-object pairs "
+         "|\n"
       << "|---|---|---|---|---|---|---|\n";
   const std::string all_threads = " (" + std::to_string(run.threads) + " threads)";
   const std::string sscc_name = "SSCC" + (run.threads > 1 ? all_threads : "");
   const std::string traditional_name = "traditional" + (run.threads > 1 ? all_threads : "");
-  for (const auto& [name, m] : {std::make_pair(sscc_name, &run.sscc), std::make_pair(std::string("SSCC (1 thread)"), &run.sscc_one_thread),
-                                std::make_pair(traditional_name, &run.traditional),
-                                std::make_pair(std::string("traditional (1 thread)"), &run.traditional_one_thread)}) {
+  for (const auto& [name, m] :
+       {std::make_pair(sscc_name, &run.sscc), std::make_pair(std::string("SSCC (1 thread)"), &run.sscc_one_thread),
+        std::make_pair(traditional_name, &run.traditional),
+        std::make_pair(std::string("traditional (1 thread)"), &run.traditional_one_thread)}) {
     if (m->ms.empty()) continue;
     std::snprintf(line, sizeof line, "| %s | %.3f | %.3f | %.3f | %d | %ld | %ld |\n", name.c_str(), m->mean(),
                   m->median(), m->max(), m->colliding_steps, m->self_pairs, m->inter_pairs);
@@ -114,8 +116,7 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
                   run.identical_thread_steps, run.steps);
     out << line;
   }
-  out << "agreement: SSCC and traditional reports identical on " << run.identical_steps << "/" << run.steps
-      << " steps";
+  out << "agreement: SSCC and traditional reports identical on " << run.identical_steps << "/" << run.steps << " steps";
   if (run.fcl_object_steps > 0) {
     out << "; FCL self-collision identical on " << run.fcl_identical << "/" << run.fcl_object_steps
         << " sampled object-steps, its disagreements settled by the exact kernels: false positives "

@@ -66,14 +66,15 @@ std::vector<ObjectStep> EarDrop::step() {
         b.frame.translation.y() = -lowest_;
         const double speed = -b.vertical_velocity;
         // The ground's impulse, upward in the body frame (the yaw keeps y up).
-        b.modes.add_impulse(modal_impulse(model_, bottom_, Eigen::Vector3d(0, mass_ * (1 + options_.restitution) * speed, 0)));
+        b.modes.add_impulse(
+            modal_impulse(model_, bottom_, Eigen::Vector3d(0, mass_ * (1 + options_.restitution) * speed, 0)));
         ++events_;
         b.vertical_velocity = options_.restitution * speed;
         if (b.vertical_velocity < kRestSpeed) {
           b.resting = true;
           b.vertical_velocity = 0.0;
-          b.next_strike = time_ + options_.strike_wait_min +
-                          (options_.strike_wait_max - options_.strike_wait_min) * uniform(rng_);
+          b.next_strike =
+              time_ + options_.strike_wait_min + (options_.strike_wait_max - options_.strike_wait_min) * uniform(rng_);
         }
       }
     } else if (time_ >= b.next_strike) {
@@ -87,8 +88,8 @@ std::vector<ObjectStep> EarDrop::step() {
       const Eigen::Vector3d direction = Eigen::Vector3d(uniform(rng_) - 0.5, 0.0, uniform(rng_) - 0.5).normalized();
       b.modes.add_impulse(modal_impulse(model_, patch, mass_ / 20.0 * options_.strike_speed * direction));
       ++events_;
-      b.next_strike = time_ + options_.strike_wait_min +
-                      (options_.strike_wait_max - options_.strike_wait_min) * uniform(rng_);
+      b.next_strike =
+          time_ + options_.strike_wait_min + (options_.strike_wait_max - options_.strike_wait_min) * uniform(rng_);
     }
     b.modes.step();
     steps[i].q1 = b.modes.q();

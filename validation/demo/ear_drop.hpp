@@ -20,13 +20,13 @@ namespace sscc::validation {
 struct EarDropOptions {
   SceneMotionOptions motion{16, 0.01, 0.01, 1};
   double restitution = 0.4;
-  double drop_height_min = 0.2;   ///< m, lowest point above the ground at release
+  double drop_height_min = 0.2;  ///< m, lowest point above the ground at release
   double drop_height_max = 1.5;
-  double strike_speed = 6.0;      ///< m/s: a strike's impulse is (mass / 20) times this
-  double strike_wait_min = 1.0;   ///< s after settling, and between strikes
+  double strike_speed = 6.0;     ///< m/s: a strike's impulse is (mass / 20) times this
+  double strike_wait_min = 1.0;  ///< s after settling, and between strikes
   double strike_wait_max = 3.0;
-  double spacing = 1.3;           ///< grid pitch, in units of the mesh's largest extent
-  double gravity = 9.81;          ///< m/s^2
+  double spacing = 1.3;   ///< grid pitch, in units of the mesh's largest extent
+  double gravity = 9.81;  ///< m/s^2
 };
 
 /// Events: landings and strikes.

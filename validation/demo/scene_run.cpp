@@ -11,8 +11,8 @@
 #include "demo/spring_scene.hpp"
 #include "fcl_self_ccd.hpp"
 #include "sscc/scene/scene.hpp"
-#include "statistics.hpp"
 #include "sscc/threads.hpp"
+#include "statistics.hpp"
 
 namespace sscc::validation {
 
@@ -36,7 +36,8 @@ Preset preset(const std::string& scene) {
   if (scene == "bunnies") return {"", "", "modal", 30, 16, rubber, 0.1, false};
   if (scene == "spring") return {"", "spring", "modal", 20, 1, steel, 0.02, true};
   if (scene == "dragon") {
-    return {data_dir() + "/../../shared/data/meshes/ChineseDragon-10kv.off", "", "polynomial", 27, 1, rubber, 0.1, false};
+    return {
+        data_dir() + "/../../shared/data/meshes/ChineseDragon-10kv.off", "", "polynomial", 27, 1, rubber, 0.1, false};
   }
   throw std::invalid_argument("unknown scene '" + scene + "' (bunnies, spring, dragon)");
 }
@@ -80,9 +81,7 @@ double MethodTimes::median() const { return validation::median(ms); }
 double MethodTimes::max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
 
 double SceneRun::speedup() const { return traditional.mean() / std::max(sscc.mean(), 1e-9); }
-double SceneRun::discrete_speedup() const {
-  return discrete_traditional.mean() / std::max(discrete_sscc.mean(), 1e-9);
-}
+double SceneRun::discrete_speedup() const { return discrete_traditional.mean() / std::max(discrete_sscc.mean(), 1e-9); }
 double SceneRun::thread_speedup(const MethodTimes& one_thread, const MethodTimes& all) const {
   return one_thread.ms.empty() ? 0.0 : one_thread.mean() / std::max(all.mean(), 1e-9);
 }
@@ -134,8 +133,8 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     motion_source = std::make_unique<EarDrop>(model, mass, d);
   }
   const std::function<std::vector<ObjectStep>()> next = [&] { return motion_source->step(); };
-  progress << "scene " << o.scene << ": " << run.objects << " objects x " << o.steps << " steps of " << o.dt
-           << " s; " << model.mesh().triangle_count() << " triangles, " << model.mode_count()
+  progress << "scene " << o.scene << ": " << run.objects << " objects x " << o.steps << " steps of " << o.dt << " s; "
+           << model.mesh().triangle_count() << " triangles, " << model.mode_count()
            << " modes; root certificate radius " << run.assets.certificates->node_radius(0) << '\n';
 
   SceneOptions with, without;
@@ -156,8 +155,9 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
       // Continuous collision detection assumes a start free of contact: checked exactly.
       for (std::size_t i = 0; i < steps.size(); ++i) {
         if (detector.query_discrete(steps[i].q0, discrete_without).collided()) {
-          throw std::runtime_error("scene " + o.scene + ": object " + std::to_string(i) +
-                                   " starts in contact with itself; the continuous queries assume a contact-free start");
+          throw std::runtime_error(
+              "scene " + o.scene + ": object " + std::to_string(i) +
+              " starts in contact with itself; the continuous queries assume a contact-free start");
         }
       }
     }
@@ -194,8 +194,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     }
     if ((k + 1) % 50 == 0 || k + 1 == o.steps) {
       progress << "scene " << o.scene << ": step " << (k + 1) << "/" << o.steps << ", SSCC " << run.sscc.mean()
-               << " ms, traditional " << run.traditional.mean()
-               << " ms per step so far\n"
+               << " ms, traditional " << run.traditional.mean() << " ms per step so far\n"
                << std::flush;
     }
   }
@@ -221,8 +220,8 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
         }
       }
       run.fcl_ms.push_back(step_ms);
-      progress << "scene " << o.scene << ": FCL on sampled step " << (s + 1) << "/" << sampled.size() << ": "
-               << step_ms << " ms\n";
+      progress << "scene " << o.scene << ": FCL on sampled step " << (s + 1) << "/" << sampled.size() << ": " << step_ms
+               << " ms\n";
     }
   }
   run.seconds = milliseconds_since(start) / 1e3;

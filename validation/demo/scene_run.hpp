@@ -34,8 +34,8 @@ struct SceneRunOptions {
   int modes = 0;      ///< 0: the scene's default
   int objects = 0;    ///< 0: the scene's default
   int steps = 300;
-  double dt = 0.01;   ///< s
-  int fcl_steps = 4;  ///< steps on which FCL's self-collision runs too (0: none)
+  double dt = 0.01;       ///< s
+  int fcl_steps = 4;      ///< steps on which FCL's self-collision runs too (0: none)
   bool discrete = false;  ///< also time the discrete query at each step's end, both ways
   std::uint64_t seed = 1;
   std::optional<double> damping_ratio, youngs_modulus, poisson_ratio, density;
@@ -65,12 +65,12 @@ struct SceneRun {
   MethodTimes sscc_one_thread, traditional_one_thread;  ///< the same steps on one thread, when threads > 1
   int identical_thread_steps = 0;  ///< steps whose one-thread reports equal the all-thread ones (both methods)
   MethodTimes discrete_sscc, discrete_traditional;  ///< empty unless options.discrete
-  int identical_steps = 0;           ///< SSCC and traditional reports identical
+  int identical_steps = 0;                          ///< SSCC and traditional reports identical
   int identical_discrete_steps = 0;
-  int all_certified_steps = 0;       ///< no object needed a traversal
+  int all_certified_steps = 0;  ///< no object needed a traversal
   long object_steps_certified = 0, object_steps_traversed = 0;
-  int impacts = 0;                   ///< landings and strikes
-  std::vector<double> fcl_ms;        ///< per sampled step, all objects
+  int impacts = 0;             ///< landings and strikes
+  std::vector<double> fcl_ms;  ///< per sampled step, all objects
   int fcl_object_steps = 0, fcl_identical = 0;
   SettledDisagreements fcl_settled;
   std::vector<std::vector<ObjectStep>> recorded;  ///< with options.record_steps

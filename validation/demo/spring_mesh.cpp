@@ -84,8 +84,7 @@ TriangleMesh double_helix_spring(const SpringShape& s) {
   normal[0] = seed.normalized();
   for (int i = 1; i <= n; ++i) {
     const Eigen::Vector3d& t = tangent[i % n];
-    const Eigen::Vector3d transported =
-        Eigen::Quaterniond::FromTwoVectors(tangent[i - 1], t) * normal[i - 1];
+    const Eigen::Vector3d transported = Eigen::Quaterniond::FromTwoVectors(tangent[i - 1], t) * normal[i - 1];
     if (i < n) normal[i] = (transported - transported.dot(t) * t).normalized();
     if (i == n) {
       const double twist = std::atan2(tangent[0].dot(transported.cross(normal[0])), transported.dot(normal[0]));

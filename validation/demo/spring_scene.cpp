@@ -15,8 +15,8 @@ constexpr double kEndBand = 0.05;
 /// z of the top vertices against the bottom ones) by `shortening`.
 Eigen::VectorXd compression(const SubspaceModel& model, const std::vector<int>& top, const std::vector<int>& bottom,
                             double shortening) {
-  const Eigen::VectorXd force = modal_impulse(model, top, Eigen::Vector3d(0, 0, -1)) +
-                                modal_impulse(model, bottom, Eigen::Vector3d(0, 0, 1));
+  const Eigen::VectorXd force =
+      modal_impulse(model, top, Eigen::Vector3d(0, 0, -1)) + modal_impulse(model, bottom, Eigen::Vector3d(0, 0, 1));
   const Eigen::VectorXd q = force.cwiseQuotient(2.0 * model.weights());
   const Eigen::VectorXd q_hat = q.cwiseProduct(model.weights().cwiseSqrt());
   const auto mean_z = [&](const std::vector<int>& vertices) {
@@ -44,8 +44,7 @@ SpringScene::SpringScene(const SubspaceModel& model, double mass, const SpringSc
   const double spacing = pitch(options.spacing);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
-    Spring s{modes_at_rest(), {},
-             options.strike_interval * (0.5 + 0.5 * uniform(rng_))};
+    Spring s{modes_at_rest(), {}, options.strike_interval * (0.5 + 0.5 * uniform(rng_))};
     s.modes.hold_at(held);
     s.frame.translation = Eigen::Vector3d(spacing * i, 0.0, 0.0);
     springs_.push_back(s);

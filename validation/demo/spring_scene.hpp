@@ -24,8 +24,8 @@ struct SpringSceneOptions {
   double initial_compression = 0.25;
   double strike_speed_min = 7.0;  ///< m/s
   double strike_speed_max = 12.0;
-  double strike_interval = 2.5;   ///< s between strikes of one spring
-  double spacing = 1.3;           ///< side-by-side pitch, in units of the spring's largest extent
+  double strike_interval = 2.5;  ///< s between strikes of one spring
+  double spacing = 1.3;          ///< side-by-side pitch, in units of the spring's largest extent
 };
 
 /// Events: strikes.

@@ -14,14 +14,9 @@ int sign_of(const mpq_class& x) { return sgn(x); }
 
 }  // namespace
 
-Polynomial::Polynomial(std::vector<mpq_class> coefficients)
-    : coefficients_(std::move(coefficients)) {
-  trim();
-}
+Polynomial::Polynomial(std::vector<mpq_class> coefficients) : coefficients_(std::move(coefficients)) { trim(); }
 
-Polynomial Polynomial::linear(const mpq_class& c0, const mpq_class& c1) {
-  return Polynomial({c0, c1});
-}
+Polynomial Polynomial::linear(const mpq_class& c0, const mpq_class& c1) { return Polynomial({c0, c1}); }
 
 void Polynomial::trim() {
   while (!coefficients_.empty() && sgn(coefficients_.back()) == 0) coefficients_.pop_back();
@@ -103,8 +98,7 @@ Polynomial operator*(const Polynomial& a, const Polynomial& b) {
   return Polynomial(std::move(c));
 }
 
-void divide(const Polynomial& a, const Polynomial& b, Polynomial& quotient,
-            Polynomial& remainder) {
+void divide(const Polynomial& a, const Polynomial& b, Polynomial& quotient, Polynomial& remainder) {
   if (b.is_zero()) throw std::invalid_argument("sscc::exact::divide: division by zero");
   std::vector<mpq_class> r = a.coefficients();
   const int db = b.degree();
@@ -171,8 +165,8 @@ int SturmSequence::count_roots(const mpq_class& lo, const mpq_class& hi) const {
 
 namespace {
 
-void isolate(const Polynomial& p, const SturmSequence& sturm, const mpq_class& lo,
-             const mpq_class& hi, std::vector<RealRoot>& out) {
+void isolate(const Polynomial& p, const SturmSequence& sturm, const mpq_class& lo, const mpq_class& hi,
+             std::vector<RealRoot>& out) {
   const int hi_is_root = p.sign_at(hi) == 0 ? 1 : 0;
   const int count = sturm.count_roots(lo, hi) - hi_is_root;
   if (count == 0) return;
@@ -272,9 +266,7 @@ double round_down(const mpq_class& value) {
   return d;
 }
 
-Vec3q to_rational(double x, double y, double z) {
-  return {mpq_class(x), mpq_class(y), mpq_class(z)};
-}
+Vec3q to_rational(double x, double y, double z) { return {mpq_class(x), mpq_class(y), mpq_class(z)}; }
 
 PolyVec3 linear_trajectory(const Vec3q& x0, const Vec3q& x1) {
   PolyVec3 x;
@@ -282,17 +274,13 @@ PolyVec3 linear_trajectory(const Vec3q& x0, const Vec3q& x1) {
   return x;
 }
 
-PolyVec3 operator-(const PolyVec3& a, const PolyVec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
+PolyVec3 operator-(const PolyVec3& a, const PolyVec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 PolyVec3 cross(const PolyVec3& a, const PolyVec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-Polynomial dot(const PolyVec3& a, const PolyVec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+Polynomial dot(const PolyVec3& a, const PolyVec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 bool is_zero(const PolyVec3& a) { return a[0].is_zero() && a[1].is_zero() && a[2].is_zero(); }
 

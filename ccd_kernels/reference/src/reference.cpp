@@ -30,8 +30,7 @@ ContactTime first_root_where(const Polynomial& p, const Predicate& holds) {
 
 /// True when the boxes bounding the two groups of points over the whole step are disjoint:
 /// then the primitives, inside their boxes at every t, never touch.
-bool boxes_disjoint(std::initializer_list<const Vec3q*> first,
-                    std::initializer_list<const Vec3q*> second) {
+bool boxes_disjoint(std::initializer_list<const Vec3q*> first, std::initializer_list<const Vec3q*> second) {
   for (int k = 0; k < 3; ++k) {
     const auto bounds = [k](std::initializer_list<const Vec3q*> group) {
       mpq_class lo = (**group.begin())[k];
@@ -73,17 +72,13 @@ ContactTime point_edge(const PolyVec3& p, const PolyVec3& a, const PolyVec3& b) 
   }
   Polynomial collinear;  // gcd of the non-zero components: its roots are the collinear times
   for (const Polynomial& c : normal) collinear = gcd(collinear, c);
-  return first_root_where(collinear, [&](RealRoot& root) {
-    return sign_at_root(between, root) <= 0;
-  });
+  return first_root_where(collinear, [&](RealRoot& root) { return sign_at_root(between, root) <= 0; });
 }
 
-bool point_in_triangle_at(const PolyVec3& p, const PolyVec3& a, const PolyVec3& b,
-                          const PolyVec3& c, RealRoot& root) {
+bool point_in_triangle_at(const PolyVec3& p, const PolyVec3& a, const PolyVec3& b, const PolyVec3& c, RealRoot& root) {
   const PolyVec3 normal = cross(b - a, c - a);
   if (vanishes_at(normal, root)) {
-    return on_segment_at(p, a, b, root) || on_segment_at(p, b, c, root) ||
-           on_segment_at(p, c, a, root);
+    return on_segment_at(p, a, b, root) || on_segment_at(p, b, c, root) || on_segment_at(p, c, a, root);
   }
   // p is coplanar with the triangle: inside iff each sub-triangle faces along the normal.
   return sign_at_root(dot(cross(b - a, p - a), normal), root) >= 0 &&
@@ -91,29 +86,28 @@ bool point_in_triangle_at(const PolyVec3& p, const PolyVec3& a, const PolyVec3& 
          sign_at_root(dot(cross(a - c, p - c), normal), root) >= 0;
 }
 
-bool segments_intersect_at(const PolyVec3& a0, const PolyVec3& a1, const PolyVec3& b0,
-                           const PolyVec3& b1, RealRoot& root) {
+bool segments_intersect_at(const PolyVec3& a0, const PolyVec3& a1, const PolyVec3& b0, const PolyVec3& b1,
+                           RealRoot& root) {
   const PolyVec3 da = a1 - a0;
   const PolyVec3 db = b1 - b0;
   const PolyVec3 normal = cross(da, db);
   if (vanishes_at(normal, root)) {
-    return on_segment_at(b0, a0, a1, root) || on_segment_at(b1, a0, a1, root) ||
-           on_segment_at(a0, b0, b1, root) || on_segment_at(a1, b0, b1, root);
+    return on_segment_at(b0, a0, a1, root) || on_segment_at(b1, a0, a1, root) || on_segment_at(a0, b0, b1, root) ||
+           on_segment_at(a1, b0, b1, root);
   }
   // Coplanar, not parallel: a0 + s da = b0 + u db with s = s_num / nn, u = u_num / nn.
   const PolyVec3 w = b0 - a0;
   const Polynomial nn = dot(normal, normal);
   const Polynomial s_num = dot(cross(w, db), normal);
   const Polynomial u_num = dot(cross(w, da), normal);
-  return sign_at_root(s_num, root) >= 0 && sign_at_root(nn - s_num, root) >= 0 &&
-         sign_at_root(u_num, root) >= 0 && sign_at_root(nn - u_num, root) >= 0;
+  return sign_at_root(s_num, root) >= 0 && sign_at_root(nn - s_num, root) >= 0 && sign_at_root(u_num, root) >= 0 &&
+         sign_at_root(nn - u_num, root) >= 0;
 }
 
 }  // namespace
 
-ContactTime reference_vertex_face(const Vec3q& v_t0, const Vec3q& f0_t0, const Vec3q& f1_t0,
-                                  const Vec3q& f2_t0, const Vec3q& v_t1, const Vec3q& f0_t1,
-                                  const Vec3q& f1_t1, const Vec3q& f2_t1) {
+ContactTime reference_vertex_face(const Vec3q& v_t0, const Vec3q& f0_t0, const Vec3q& f1_t0, const Vec3q& f2_t0,
+                                  const Vec3q& v_t1, const Vec3q& f0_t1, const Vec3q& f1_t1, const Vec3q& f2_t1) {
   if (boxes_disjoint({&f0_t0, &f1_t0, &f2_t0, &f0_t1, &f1_t1, &f2_t1}, {&v_t0, &v_t1})) {
     return std::nullopt;
   }
@@ -123,18 +117,15 @@ ContactTime reference_vertex_face(const Vec3q& v_t0, const Vec3q& f0_t0, const V
   const PolyVec3 c = linear_trajectory(f2_t0, f2_t1);
   const Polynomial coplanar = dot(cross(b - a, c - a), p - a);
   if (!coplanar.is_zero()) {
-    return first_root_where(coplanar, [&](RealRoot& root) {
-      return point_in_triangle_at(p, a, b, c, root);
-    });
+    return first_root_where(coplanar, [&](RealRoot& root) { return point_in_triangle_at(p, a, b, c, root); });
   }
   RealRoot start = exact_root(0);
   if (point_in_triangle_at(p, a, b, c, start)) return start;
   return earlier(earlier(point_edge(p, a, b), point_edge(p, b, c)), point_edge(p, c, a));
 }
 
-ContactTime reference_edge_edge(const Vec3q& ea0_t0, const Vec3q& ea1_t0, const Vec3q& eb0_t0,
-                                const Vec3q& eb1_t0, const Vec3q& ea0_t1, const Vec3q& ea1_t1,
-                                const Vec3q& eb0_t1, const Vec3q& eb1_t1) {
+ContactTime reference_edge_edge(const Vec3q& ea0_t0, const Vec3q& ea1_t0, const Vec3q& eb0_t0, const Vec3q& eb1_t0,
+                                const Vec3q& ea0_t1, const Vec3q& ea1_t1, const Vec3q& eb0_t1, const Vec3q& eb1_t1) {
   if (boxes_disjoint({&ea0_t0, &ea1_t0, &ea0_t1, &ea1_t1}, {&eb0_t0, &eb1_t0, &eb0_t1, &eb1_t1})) {
     return std::nullopt;
   }
@@ -144,9 +135,7 @@ ContactTime reference_edge_edge(const Vec3q& ea0_t0, const Vec3q& ea1_t0, const 
   const PolyVec3 b1 = linear_trajectory(eb1_t0, eb1_t1);
   const Polynomial coplanar = dot(cross(a1 - a0, b0 - a0), b1 - a0);
   if (!coplanar.is_zero()) {
-    return first_root_where(coplanar, [&](RealRoot& root) {
-      return segments_intersect_at(a0, a1, b0, b1, root);
-    });
+    return first_root_where(coplanar, [&](RealRoot& root) { return segments_intersect_at(a0, a1, b0, b1, root); });
   }
   RealRoot start = exact_root(0);
   if (segments_intersect_at(a0, a1, b0, b1, start)) return start;

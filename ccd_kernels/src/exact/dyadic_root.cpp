@@ -134,8 +134,8 @@ bool newton_step(DyadicRoot& root) {
   const IntegerPolynomial& p = root.polynomial;
   const IntegerPolynomial slope = derivative(p);
   const Dyadic mid = right_child(root.start);
-  const mpz_class value = scaled_value(p, mid);             // p(x) 2^(k1 d)
-  const mpz_class slope_value = scaled_value(slope, mid);   // p'(x) 2^(k1 (d - 1))
+  const mpz_class value = scaled_value(p, mid);            // p(x) 2^(k1 d)
+  const mpz_class slope_value = scaled_value(slope, mid);  // p'(x) 2^(k1 (d - 1))
   if (sgn(slope_value) == 0) return false;
   // x - p(x) / p'(x) on the grid 2^-fine: p / p' = value / (slope_value 2^k1).
   const unsigned long fine = 2 * mid.k;
@@ -170,8 +170,7 @@ bool newton_step(DyadicRoot& root) {
 /// Narrows the root's piece: a bisection, or every few steps a Newton step. `companion`
 /// (another polynomial's coefficients on the piece) follows. Returns the companion's sign
 /// at the root when the root turns out exact, else 2.
-int narrow(DyadicRoot& root, int& steps, const IntegerPolynomial* companion_polynomial,
-           Bernstein* companion) {
+int narrow(DyadicRoot& root, int& steps, const IntegerPolynomial* companion_polynomial, Bernstein* companion) {
   if (++steps % kBisectionsPerNewtonStep == 0 && newton_step(root)) {
     if (root.exact) return companion ? sign_at(*companion_polynomial, root.start) : 2;
     if (companion) *companion = bernstein_on_piece(*companion_polynomial, root.start);

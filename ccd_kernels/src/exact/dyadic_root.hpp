@@ -19,7 +19,7 @@ struct DyadicRoot {
   IntegerPolynomial polynomial;  ///< square-free
   Dyadic start;                  ///< the root itself when exact, else its piece's start
   bool exact = false;
-  int sign_at_start = 0;         ///< of `polynomial`, when not exact (never 0)
+  int sign_at_start = 0;  ///< of `polynomial`, when not exact (never 0)
   /// `polynomial` on the piece, when not exact: narrowing splits it (additions and shifts)
   /// rather than evaluating at the midpoint (products of long integers).
   Bernstein on_piece;

@@ -73,8 +73,7 @@ Bernstein bernstein_on_piece(const IntegerPolynomial& p, const Dyadic& piece_sta
       q[j] *= piece_start.a;
       if (j > 0) q[j] += q[j - 1];
     }
-    mpz_mul_2exp(term.get_mpz_t(), p.c[i].get_mpz_t(),
-                 piece_start.k * static_cast<unsigned long>(kMaxDegree - i));
+    mpz_mul_2exp(term.get_mpz_t(), p.c[i].get_mpz_t(), piece_start.k * static_cast<unsigned long>(kMaxDegree - i));
     q[0] += term;
   }
   // Bernstein coefficients of a cubic, times 3: b_j = sum_i C(j, i) (3 / C(3, i)) q_i.
@@ -144,8 +143,7 @@ void make_primitive(IntegerPolynomial& p) {
 }
 
 /// lc(b)^m a = q b + r with deg r < deg b (pseudo-division); b not zero.
-void pseudo_divide(const IntegerPolynomial& a, const IntegerPolynomial& b, IntegerPolynomial& q,
-                   IntegerPolynomial& r) {
+void pseudo_divide(const IntegerPolynomial& a, const IntegerPolynomial& b, IntegerPolynomial& q, IntegerPolynomial& r) {
   r = a;
   q = IntegerPolynomial();
   const mpz_class& lead = b.c[b.degree];

@@ -52,9 +52,7 @@ std::array<PolyVec3, 4> integer_trajectories(const FourPointMotion& motion) {
   return x;
 }
 
-PolyVec3 operator-(const PolyVec3& a, const PolyVec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
+PolyVec3 operator-(const PolyVec3& a, const PolyVec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 PolyVec3 cross(const PolyVec3& a, const PolyVec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -92,9 +90,7 @@ Conditions build_conditions(const FourPointMotion& motion) {
     PlaneConditions& plane = c.planes[k];
     const IntegerPolynomial mixed = k12[k] + k23[k] - k13[k];
     // "p between q and r" on a line: (p - q) . (p - r) <= 0.
-    const auto between = [&](int p, int q, int r) {
-      return planar_dot(x[p] - x[q], x[p] - x[r], k);
-    };
+    const auto between = [&](int p, int q, int r) { return planar_dot(x[p] - x[q], x[p] - x[r], k); };
     if (motion.pair == PrimitivePair::kVertexFace) {
       plane.orientations = {k13[k], mixed, -k23[k]};
       plane.between = {between(3, 0, 1), between(3, 1, 2), between(3, 2, 0)};

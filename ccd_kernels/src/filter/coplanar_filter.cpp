@@ -51,9 +51,7 @@ class ErrorBounds {
         orientation_unit_(kUnitRoundoff * (m1 * m2 + m1 * m3 + m2 * m3)),
         cubic_underflow_(kUnderflowAllowance * (1.0 + m1 + m2 + m3)) {}
   double cubic(int depth) const { return (72.0 + 20.0 * depth) * cubic_unit_ + cubic_underflow_; }
-  double orientation(int depth) const {
-    return (16.0 + 4.0 * depth) * orientation_unit_ + kUnderflowAllowance;
-  }
+  double orientation(int depth) const { return (16.0 + 4.0 * depth) * orientation_unit_ + kUnderflowAllowance; }
 
  private:
   double cubic_unit_;
@@ -63,9 +61,7 @@ class ErrorBounds {
 
 using Vec3 = std::array<double, 3>;
 
-Vec3 difference(const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
-  return {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
-}
+Vec3 difference(const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return {x[0] - y[0], x[1] - y[1], x[2] - y[2]}; }
 
 Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -93,8 +89,7 @@ struct CrossProductMotion {
     return a[i] * b[j] - a[j] * b[i];
   }
   Quadratic component(int k) const {
-    return {{component(x0, y0, k), 0.5 * (component(x0, y1, k) + component(x1, y0, k)),
-             component(x1, y1, k)}};
+    return {{component(x0, y0, k), 0.5 * (component(x0, y1, k) + component(x1, y0, k)), component(x1, y1, k)}};
   }
 };
 
@@ -159,9 +154,7 @@ Verdict classify_inside(PrimitivePair pair, const Piece& piece, double error) {
   return verdict;
 }
 
-bool certainly_changes_sign(const Cubic& f, double error) {
-  return f.sign_at_start(error) * f.sign_at_end(error) < 0;
-}
+bool certainly_changes_sign(const Cubic& f, double error) { return f.sign_at_start(error) * f.sign_at_end(error) < 0; }
 
 /// An approximation of a root of a cubic that changes sign on [0, 1] (safeguarded Newton
 /// in the monomial basis); only a guess, certified by the caller.
@@ -190,16 +183,15 @@ double guess_root(const Cubic& f) {
 /// the coefficients' error).
 bool certainly_monotone(const Cubic& f, double error) {
   const int s = certain_sign(f.b[1] - f.b[0], 2.0 * error);
-  return s != 0 && certain_sign(f.b[2] - f.b[1], 2.0 * error) == s &&
-         certain_sign(f.b[3] - f.b[2], 2.0 * error) == s;
+  return s != 0 && certain_sign(f.b[2] - f.b[1], 2.0 * error) == s && certain_sign(f.b[3] - f.b[2], 2.0 * error) == s;
 }
 
 /// Narrows a piece on which every root is a contact and the cubic changes sign down to the
 /// earliest root, by bisection; once the cubic is monotone on the piece its one root is
 /// guessed and certified by the signs on both sides of a tolerance-wide band around it.
 /// Returns false when a sign is too close to call.
-bool refine_first_root(Cubic f, double t0, double t1, int depth, double tolerance,
-                       const ErrorBounds& bounds, double& toi) {
+bool refine_first_root(Cubic f, double t0, double t1, int depth, double tolerance, const ErrorBounds& bounds,
+                       double& toi) {
   while (t1 - t0 > tolerance) {
     if (certainly_monotone(f, bounds.cubic(depth))) {
       const double width = t1 - t0;
@@ -251,12 +243,10 @@ void set_plane(PrimitivePair pair, const Vec3 (&e)[3][2], int k, const Quadratic
 /// Planes in the order most likely to decide: the one facing the primitives' common
 /// normal at t = 0 first (the triangle's normal, or edge a x edge b).
 std::array<int, 3> plane_order(PrimitivePair pair, const Vec3 (&e)[3][2]) {
-  const Vec3 normal = pair == PrimitivePair::kVertexFace
-                          ? cross(e[0][0], e[1][0])
-                          : cross(e[0][0], difference3(e[2][0], e[1][0]));
+  const Vec3 normal =
+      pair == PrimitivePair::kVertexFace ? cross(e[0][0], e[1][0]) : cross(e[0][0], difference3(e[2][0], e[1][0]));
   std::array<int, 3> order = {0, 1, 2};
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return std::fabs(normal[a]) > std::fabs(normal[b]); });
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return std::fabs(normal[a]) > std::fabs(normal[b]); });
   return order;
 }
 
@@ -314,16 +304,14 @@ FilterOutcome run_coplanar_filter(const FourPointMotion& motion, double toi_tole
       --size;
       continue;
     }
-    const Verdict inside =
-        classify_inside(motion.pair, piece, bounds.orientation(piece.depth));
+    const Verdict inside = classify_inside(motion.pair, piece, bounds.orientation(piece.depth));
     if (inside == Verdict::kNoContact) {
       --size;
       continue;
     }
     if (inside == Verdict::kContact && certainly_changes_sign(piece.coplanarity, cubic_error)) {
       FilterOutcome outcome{Verdict::kContact, DecidedBy::kIntervalFilter};
-      if (!refine_first_root(piece.coplanarity, piece.t0, piece.t1, piece.depth, toi_tolerance,
-                             bounds, outcome.toi)) {
+      if (!refine_first_root(piece.coplanarity, piece.t0, piece.t1, piece.depth, toi_tolerance, bounds, outcome.toi)) {
         return {};
       }
       return outcome;

@@ -43,16 +43,14 @@ inline Bounded operator-(const Bounded& a) { return {-a.value, a.error}; }
 
 inline Bounded operator*(const Bounded& a, const Bounded& b) {
   const double r = a.value * b.value;
-  const double propagated =
-      std::fabs(a.value) * b.error + std::fabs(b.value) * a.error + a.error * b.error;
+  const double propagated = std::fabs(a.value) * b.error + std::fabs(b.value) * a.error + a.error * b.error;
   return {r, (propagated + rounding_of(r) + kUnderflowError) * kErrorSumSlack};
 }
 
 /// Multiplication by an exact power of two in [2^-8, 2^8] (0.5 for midpoints): exact
 /// unless the result underflows.
 inline Bounded scaled(const Bounded& a, double power_of_two) {
-  return {a.value * power_of_two,
-          (a.error * power_of_two + kUnderflowError) * kErrorSumSlack};
+  return {a.value * power_of_two, (a.error * power_of_two + kUnderflowError) * kErrorSumSlack};
 }
 
 /// Division by a positive exact double.

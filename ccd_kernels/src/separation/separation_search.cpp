@@ -108,8 +108,7 @@ bool certainly_farther(const Corners& c, double d) {
 /// A corner at distance at most `reach` (in floating point), or -1.
 int corner_within(const Corners& c, double reach) {
   for (int corner = 0; corner < 8; ++corner) {
-    const double squared = c.f[corner][0].value * c.f[corner][0].value +
-                           c.f[corner][1].value * c.f[corner][1].value +
+    const double squared = c.f[corner][0].value * c.f[corner][0].value + c.f[corner][1].value * c.f[corner][1].value +
                            c.f[corner][2].value * c.f[corner][2].value;
     if (squared <= reach * reach) return corner;
   }
@@ -118,8 +117,7 @@ int corner_within(const Corners& c, double reach) {
 
 }  // namespace
 
-CcdResult separation_search(const FourPointMotion& motion, double minimum_separation,
-                            double toi_tolerance) {
+CcdResult separation_search(const FourPointMotion& motion, double minimum_separation, double toi_tolerance) {
   const Difference f(motion);
   const bool triangle_domain = motion.pair == PrimitivePair::kVertexFace;
   const double reach = (1.0 + kSeparationRelativeTolerance) * minimum_separation;

@@ -20,7 +20,6 @@
 
 namespace sscc::ccd {
 
-CcdResult separation_search(const FourPointMotion& motion, double minimum_separation,
-                            double toi_tolerance);
+CcdResult separation_search(const FourPointMotion& motion, double minimum_separation, double toi_tolerance);
 
 }  // namespace sscc::ccd

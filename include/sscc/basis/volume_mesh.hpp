@@ -28,8 +28,8 @@ struct VolumeMesh {
   std::vector<Eigen::Vector3d> nodes;
   std::vector<Tetrahedron> tetrahedra;
   Eigen::SparseMatrix<double, Eigen::RowMajor> embedding;  ///< surface vertices x nodes
-  std::string method;                                       ///< "tetgen" or "voxel"
-  std::string note;  ///< why the method was chosen (e.g. TetGen's refusal)
+  std::string method;                                      ///< "tetgen" or "voxel"
+  std::string note;                                        ///< why the method was chosen (e.g. TetGen's refusal)
 };
 
 /// The signed volume of tetrahedron t (positive when oriented).

@@ -71,8 +71,7 @@ class SubspaceBvh {
   /// Box of node n for scaled coordinates q_hat, whose norm is given (O(r)).
   Aabb box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) const;
   /// Box of node n over the straight-line step q_hat0 -> q_hat1; s = max of their norms.
-  Aabb swept_box(int n, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1,
-                 double s) const;
+  Aabb swept_box(int n, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s) const;
 
   /// Checks the structure (children partition their parent, every triangle in exactly one
   /// leaf, leaf sizes) and that every node's box contains its vertices at `samples` random

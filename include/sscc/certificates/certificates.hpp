@@ -85,9 +85,7 @@ class Certificates {
   double node_radius(int n) const { return node_radius_[n]; }
   /// R_ab for two children of one node; 0 (no certificate) for any other pair.
   double sibling_radius(int a, int b) const {
-    return first_sibling_[a] == first_sibling_[b] && a != b
-               ? sibling_radius_[a][b - first_sibling_[b]]
-               : 0.0;
+    return first_sibling_[a] == first_sibling_[b] && a != b ? sibling_radius_[a][b - first_sibling_[b]] : 0.0;
   }
   int node_count() const { return static_cast<int>(node_radius_.size()); }
   const CertificateParameters& parameters() const { return parameters_; }
@@ -104,7 +102,7 @@ class Certificates {
   std::uint64_t key_ = 0;
   double global_radius_ = 0.0;
   std::vector<double> node_radius_;
-  std::vector<int> first_sibling_;                   // the first child of the node's parent
+  std::vector<int> first_sibling_;                                    // the first child of the node's parent
   std::vector<std::array<double, kBranchingFactor>> sibling_radius_;  // by the sibling's position
   PrecomputeStats stats_;
 };

@@ -25,11 +25,11 @@ struct CullCounts {
 
 struct CullValidation {
   int poses = 0;
-  int nodes = 0;              ///< per pose
-  long colliding = 0;         ///< (pose, node) pairs with a collision under the node
-  int colliding_poses = 0;    ///< poses with a collision anywhere
-  CullCounts sound;           ///< the certificates
-  CullCounts predicted;       ///< EXPERIMENTAL, NOT CONSERVATIVE: the regression
+  int nodes = 0;            ///< per pose
+  long colliding = 0;       ///< (pose, node) pairs with a collision under the node
+  int colliding_poses = 0;  ///< poses with a collision anywhere
+  CullCounts sound;         ///< the certificates
+  CullCounts predicted;     ///< EXPERIMENTAL, NOT CONSERVATIVE: the regression
 };
 
 /// For each pose (reduced coordinates q, not scaled) with its ground truth (colliding_nodes,

@@ -59,9 +59,9 @@ class CullingPredictor {
   CullingPredictor() = default;
   Eigen::VectorXd features(const Eigen::VectorXd& q) const;
 
-  Eigen::VectorXd sqrt_weights_;   // M^(1/2), r
-  Eigen::MatrixXd coefficients_;   // nodes x (2r + 1): row n is F_n
-  Eigen::VectorXd thresholds_;     // theta_n
+  Eigen::VectorXd sqrt_weights_;  // M^(1/2), r
+  Eigen::MatrixXd coefficients_;  // nodes x (2r + 1): row n is F_n
+  Eigen::VectorXd thresholds_;    // theta_n
 };
 
 }  // namespace sscc::experimental

@@ -22,8 +22,8 @@ class MeshFileError : public std::runtime_error {
 };
 
 struct MeshReadReport {
-  int polygons_triangulated = 0;                       ///< faces of 4+ vertices
-  std::vector<int> zero_area_triangles;                ///< triangle indices
+  int polygons_triangulated = 0;                         ///< faces of 4+ vertices
+  std::vector<int> zero_area_triangles;                  ///< triangle indices
   std::vector<std::pair<int, int>> duplicate_triangles;  ///< (first, repeat), same vertex set
   /// One line for people, e.g. "2 polygons triangulated, 1 zero-area triangle".
   std::string summary() const;

@@ -46,10 +46,10 @@ struct PoseStepOptions {
 
 struct PoseStepReport {
   SelfCcdReport ccd;
-  Eigen::VectorXd q0, q1;       ///< the projections
-  SubspaceResidual residual0;   ///< of x0 from m + U q0
+  Eigen::VectorXd q0, q1;      ///< the projections
+  SubspaceResidual residual0;  ///< of x0 from m + U q0
   SubspaceResidual residual1;
-  double tolerance = 0.0;       ///< the largest vertex residual accepted (mesh units)
+  double tolerance = 0.0;  ///< the largest vertex residual accepted (mesh units)
   /// True: a residual exceeded the tolerance and ccd is query_positions(x0, x1); false: ccd
   /// is query(q0, q1), with the certificates when there are any.
   bool fell_back = false;

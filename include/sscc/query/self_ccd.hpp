@@ -57,7 +57,7 @@ struct FeatureContact {
 };
 
 struct TrianglePairContact {
-  int first;   ///< first < second
+  int first;  ///< first < second
   int second;
   double toi;  ///< the earliest of its features' times
   friend bool operator==(const TrianglePairContact& a, const TrianglePairContact& b) {
@@ -121,11 +121,11 @@ struct SelfCcdOptions {
 struct SelfCcdStats {
   long nodes_visited = 0;
   long box_tests = 0;
-  long triangle_pairs = 0;   ///< non-adjacent pairs whose swept boxes overlapped
+  long triangle_pairs = 0;  ///< non-adjacent pairs whose swept boxes overlapped
   long kernel_calls = 0;
   long vertices_computed = 0;
-  long certified = 0;          ///< nodes and sibling pairs culled by a certificate
-  long cone_culled = 0;        ///< nodes and node pairs culled by the normal-cone test
+  long certified = 0;           ///< nodes and sibling pairs culled by a certificate
+  long cone_culled = 0;         ///< nodes and node pairs culled by the normal-cone test
   bool root_certified = false;  ///< the whole step decided by the root's certificate
   double seconds = 0.0;
 };
@@ -157,8 +157,7 @@ class SelfCcd {
   /// Swept-box traversal of the hierarchy (culled by the certificates), then the kernels.
   /// q0 and q1 are reduced coordinates (not scaled); wrong sizes or NaN/infinity throw
   /// std::invalid_argument.
-  SelfCcdReport query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
-                      const SelfCcdOptions& options = {}) const;
+  SelfCcdReport query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
 
   /// Whether the root's certificate alone decides the step (what query() then reports in
   /// O(r)): false without usable certificates. Throws as query() does for a bad q.

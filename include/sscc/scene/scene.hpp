@@ -116,8 +116,8 @@ struct SceneStats {
   int objects_static = 0;
   int objects_certified = 0;
   int objects_traversed = 0;
-  long object_pairs = 0;               ///< pairs whose tests were switched on
-  long object_pairs_culled = 0;        ///< decided by one box test (or both static)
+  long object_pairs = 0;         ///< pairs whose tests were switched on
+  long object_pairs_culled = 0;  ///< decided by one box test (or both static)
   long inter_box_tests = 0;
   long inter_triangle_pairs = 0;
   long inter_kernel_calls = 0;
@@ -128,10 +128,10 @@ struct SceneStats {
 };
 
 struct SceneReport {
-  std::vector<ObjectSelfResult> objects;      ///< one per object, in order
-  std::vector<InterObjectContact> contacts;   ///< sorted
-  std::vector<InterObjectFeature> features;   ///< sorted
-  double earliest_toi = 1.0;                  ///< over all contacts; meaningful when collided()
+  std::vector<ObjectSelfResult> objects;     ///< one per object, in order
+  std::vector<InterObjectContact> contacts;  ///< sorted
+  std::vector<InterObjectFeature> features;  ///< sorted
+  double earliest_toi = 1.0;                 ///< over all contacts; meaningful when collided()
   SceneStats stats;
   bool collided() const;
 };

@@ -1,8 +1,8 @@
 // Links against the installed core alone: a sheet whose second triangle pair falls through
 // the first during the step; the detector finds it, and a step with certificates inside the
 // root radius is decided in O(r).
-#include <sscc/query/self_ccd.hpp>
 #include <sscc/model/subspace_model.hpp>
+#include <sscc/query/self_ccd.hpp>
 
 #include <cstdio>
 

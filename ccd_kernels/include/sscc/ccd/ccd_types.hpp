@@ -33,12 +33,12 @@ struct CcdOptions {
 
 /// Which stage of the kernel decided the answer (for statistics and tests).
 enum class DecidedBy : std::uint8_t {
-  kSweptBoxes,      ///< the axis-aligned boxes swept by the two primitives are disjoint (as
-                    ///< given, or in the frame moving with their mean displacement)
-  kCoplanaritySign, ///< the coplanarity cubic has a certain sign on all of [0, 1]
-  kIntervalFilter,  ///< root bracketing and inside tests with rounding-error bounds
-  kExact,           ///< exact rational arithmetic (the filters could not decide)
-  kSeparationSearch ///< the minimum-separation subdivision search (d > 0)
+  kSweptBoxes,       ///< the axis-aligned boxes swept by the two primitives are disjoint (as
+                     ///< given, or in the frame moving with their mean displacement)
+  kCoplanaritySign,  ///< the coplanarity cubic has a certain sign on all of [0, 1]
+  kIntervalFilter,   ///< root bracketing and inside tests with rounding-error bounds
+  kExact,            ///< exact rational arithmetic (the filters could not decide)
+  kSeparationSearch  ///< the minimum-separation subdivision search (d > 0)
 };
 inline constexpr int kDecidedByCount = 5;
 const char* to_string(DecidedBy stage);

@@ -34,11 +34,9 @@ namespace sscc::ccd {
 /// Returns hit = true with toi in [t* - toi_tolerance, t*] for the first contact t* and the
 /// barycentric parameters of f1 and f2 at toi; no hit: hit = false, toi = 1, params 0.
 /// Throws std::invalid_argument for a NaN or infinite coordinate or an invalid option.
-CcdResult vertex_face_ccd(const Eigen::Vector3d& v_t0, const Eigen::Vector3d& f0_t0,
-                          const Eigen::Vector3d& f1_t0, const Eigen::Vector3d& f2_t0,
-                          const Eigen::Vector3d& v_t1, const Eigen::Vector3d& f0_t1,
-                          const Eigen::Vector3d& f1_t1, const Eigen::Vector3d& f2_t1,
-                          const CcdOptions& options = {});
+CcdResult vertex_face_ccd(const Eigen::Vector3d& v_t0, const Eigen::Vector3d& f0_t0, const Eigen::Vector3d& f1_t0,
+                          const Eigen::Vector3d& f2_t0, const Eigen::Vector3d& v_t1, const Eigen::Vector3d& f0_t1,
+                          const Eigen::Vector3d& f1_t1, const Eigen::Vector3d& f2_t1, const CcdOptions& options = {});
 
 /// Edge-edge CCD: do the closed segments (ea0(t), ea1(t)) and (eb0(t), eb1(t)) touch for
 /// some t in [0, 1], every point moving linearly from its _t0 to its _t1 position?
@@ -49,16 +47,13 @@ CcdResult vertex_face_ccd(const Eigen::Vector3d& v_t0, const Eigen::Vector3d& f0
 /// positions along edge a and edge b (each in [0, 1]) at toi; no hit: hit = false, toi = 1,
 /// params 0. Parallel and collinear edges are decided exactly like any other. Throws
 /// std::invalid_argument for a NaN or infinite coordinate or an invalid option.
-CcdResult edge_edge_ccd(const Eigen::Vector3d& ea0_t0, const Eigen::Vector3d& ea1_t0,
-                        const Eigen::Vector3d& eb0_t0, const Eigen::Vector3d& eb1_t0,
-                        const Eigen::Vector3d& ea0_t1, const Eigen::Vector3d& ea1_t1,
-                        const Eigen::Vector3d& eb0_t1, const Eigen::Vector3d& eb1_t1,
-                        const CcdOptions& options = {});
+CcdResult edge_edge_ccd(const Eigen::Vector3d& ea0_t0, const Eigen::Vector3d& ea1_t0, const Eigen::Vector3d& eb0_t0,
+                        const Eigen::Vector3d& eb1_t0, const Eigen::Vector3d& ea0_t1, const Eigen::Vector3d& ea1_t1,
+                        const Eigen::Vector3d& eb0_t1, const Eigen::Vector3d& eb1_t1, const CcdOptions& options = {});
 
 /// Exact discrete test: do the closed triangles (a0, a1, a2) and (b0, b1, b2) share a
 /// point? Degenerate (zero-area) triangles are handled as the segments or points they are.
-bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
-                         const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
-                         const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
+bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+                         const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
 
 }  // namespace sscc::ccd

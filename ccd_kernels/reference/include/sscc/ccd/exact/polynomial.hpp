@@ -42,9 +42,7 @@ class Polynomial {
   friend Polynomial operator-(const Polynomial& a, const Polynomial& b);
   friend Polynomial operator-(const Polynomial& a);
   friend Polynomial operator*(const Polynomial& a, const Polynomial& b);
-  friend bool operator==(const Polynomial& a, const Polynomial& b) {
-    return a.coefficients_ == b.coefficients_;
-  }
+  friend bool operator==(const Polynomial& a, const Polynomial& b) { return a.coefficients_ == b.coefficients_; }
 
  private:
   void trim();
@@ -56,8 +54,7 @@ class Polynomial {
 };
 
 /// Euclidean division a = q b + r with deg r < deg b. Precondition: b is not zero.
-void divide(const Polynomial& a, const Polynomial& b, Polynomial& quotient,
-            Polynomial& remainder);
+void divide(const Polynomial& a, const Polynomial& b, Polynomial& quotient, Polynomial& remainder);
 /// Monic greatest common divisor (zero when both are zero).
 Polynomial gcd(const Polynomial& a, const Polynomial& b);
 /// The product of the distinct irreducible factors: p / gcd(p, p'), monic.

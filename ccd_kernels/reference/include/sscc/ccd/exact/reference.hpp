@@ -24,13 +24,11 @@ namespace sscc::exact {
 using ContactTime = std::optional<RealRoot>;
 
 /// Point v against the closed triangle (f0, f1, f2), all moving linearly over t in [0, 1].
-ContactTime reference_vertex_face(const Vec3q& v_t0, const Vec3q& f0_t0, const Vec3q& f1_t0,
-                                  const Vec3q& f2_t0, const Vec3q& v_t1, const Vec3q& f0_t1,
-                                  const Vec3q& f1_t1, const Vec3q& f2_t1);
+ContactTime reference_vertex_face(const Vec3q& v_t0, const Vec3q& f0_t0, const Vec3q& f1_t0, const Vec3q& f2_t0,
+                                  const Vec3q& v_t1, const Vec3q& f0_t1, const Vec3q& f1_t1, const Vec3q& f2_t1);
 
 /// Closed segment (ea0, ea1) against closed segment (eb0, eb1), moving linearly.
-ContactTime reference_edge_edge(const Vec3q& ea0_t0, const Vec3q& ea1_t0, const Vec3q& eb0_t0,
-                                const Vec3q& eb1_t0, const Vec3q& ea0_t1, const Vec3q& ea1_t1,
-                                const Vec3q& eb0_t1, const Vec3q& eb1_t1);
+ContactTime reference_edge_edge(const Vec3q& ea0_t0, const Vec3q& ea1_t0, const Vec3q& eb0_t0, const Vec3q& eb1_t0,
+                                const Vec3q& ea0_t1, const Vec3q& ea1_t1, const Vec3q& eb0_t1, const Vec3q& eb1_t1);
 
 }  // namespace sscc::exact
