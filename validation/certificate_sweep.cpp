@@ -80,24 +80,14 @@ long run_certificate_sweep(const CertificateSweepOptions& o, std::ostream& out, 
   csv.close();
   progress << "csv: " << csv_path << '\n';
   Figure figure{o.output_dir + "/certificates_epsilon.png", 1100, 450, {}};
-  figure.panels.push_back(
-      {"Precomputation against accuracy",
-       "epsilon",
-       "seconds",
-       "root radius",
-       true,
-       false,
-       "top right",
-       {{csv_path, 1, "2", "precompute time"}, {csv_path, 1, "3", "root radius", "linespoints lw 2", true}}});
-  figure.panels.push_back(
-      {"Query: speedup over the traditional query",
-       "epsilon",
-       "speedup",
-       "",
-       true,
-       false,
-       "top right",
-       {{csv_path, 1, "8", "speedup (mean time)"}, {csv_path, 1, "($5*100)", "node visits culled (%)"}}});
+  figure.panels.emplace_back("Precomputation against accuracy", "epsilon", "seconds", LogScale::kX,
+                             std::vector<PlotSeries>{{csv_path, 1, "2", "precompute time"},
+                                                     {csv_path, 1, "3", "root radius", "linespoints lw 2", true}});
+  figure.panels.back().y2_label = "root radius";
+  figure.panels.emplace_back("Query: speedup over the traditional query", "epsilon", "speedup", LogScale::kX,
+                             std::vector<PlotSeries>{{csv_path, 1, "8", "speedup (mean time)"},
+                                                     {csv_path, 1, "($5*100)", "node visits culled (%)"}});
+  for (PlotPanel& panel : figure.panels) panel.key = "top right";
   render_figure(figure, progress);
   return problems;
 }

@@ -159,24 +159,13 @@ void write_plots(const std::string& dir, std::ostream& progress) {
   const std::string tolerance = dir + "/toi_tolerance.csv";
   const std::string separation = dir + "/separation.csv";
   Figure figure{dir + "/kernels_time_vs_error.png", 1100, 450, {}};
-  figure.panels.push_back({"Time of impact: cost against tolerance",
-                           "toi tolerance",
-                           "mean time per query (us)",
-                           "",
-                           true,
-                           false,
-                           "top left",
-                           {{tolerance, 1, "2", "vertex-face"}, {tolerance, 1, "3", "edge-edge"}}});
-  figure.panels.push_back({"Minimum separation d: positives beyond touching",
-                           "d",
-                           "queries",
-                           "",
-                           true,
-                           false,
-                           "top left",
-                           {{separation, 1, "3", "positives"},
-                            {separation, 1, "4", "touching (exact, d = 0)"},
-                            {separation, 1, "6", "not confirmed by sampling (FP bound)"}}});
+  figure.panels.emplace_back(
+      "Time of impact: cost against tolerance", "toi tolerance", "mean time per query (us)", LogScale::kX,
+      std::vector<PlotSeries>{{tolerance, 1, "2", "vertex-face"}, {tolerance, 1, "3", "edge-edge"}});
+  figure.panels.emplace_back("Minimum separation d: positives beyond touching", "d", "queries", LogScale::kX,
+                             std::vector<PlotSeries>{{separation, 1, "3", "positives"},
+                                                     {separation, 1, "4", "touching (exact, d = 0)"},
+                                                     {separation, 1, "6", "not confirmed by sampling (FP bound)"}});
   render_figure(figure, progress);
 }
 

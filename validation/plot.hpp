@@ -5,6 +5,7 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sscc::validation {
@@ -20,11 +21,21 @@ struct PlotSeries {
   bool right_axis = false;  ///< against the y2 axis
 };
 
+enum class LogScale { kNone, kX, kY };
+
 struct PlotPanel {
-  std::string title, x_label, y_label, y2_label;
-  bool log_x = false, log_y = false;
-  std::string key = "top left";
+  PlotPanel(std::string panel_title, std::string x, std::string y, LogScale log, std::vector<PlotSeries> curves)
+      : title(std::move(panel_title)),
+        x_label(std::move(x)),
+        y_label(std::move(y)),
+        log_x(log == LogScale::kX),
+        log_y(log == LogScale::kY),
+        series(std::move(curves)) {}
+  std::string title, x_label, y_label;
+  std::string y2_label;  ///< empty: no right axis
+  bool log_x, log_y;
   std::vector<PlotSeries> series;
+  std::string key = "top left";
 };
 
 /// Panels side by side in one PNG of width x height pixels.

@@ -121,22 +121,10 @@ void epsilon_plot(const std::vector<EpsilonRow>& rows, double traditional_self_m
   }
   file.close();
   Figure figure{dir + "/bench_epsilon.png", 1100, 450, {}};
-  figure.panels.push_back({"Precomputation (16-bunny model)",
-                           "certificate epsilon",
-                           "s",
-                           "",
-                           true,
-                           false,
-                           "top left",
-                           {{csv, 1, "2", "precompute time"}}});
-  figure.panels.push_back({"Self-collision speedup over traditional (same run)",
-                           "certificate epsilon",
-                           "x",
-                           "",
-                           true,
-                           false,
-                           "top left",
-                           {{csv, 1, "6", "speedup"}}});
+  figure.panels.emplace_back("Precomputation (16-bunny model)", "certificate epsilon", "s", LogScale::kX,
+                             std::vector<PlotSeries>{{csv, 1, "2", "precompute time"}});
+  figure.panels.emplace_back("Self-collision speedup over traditional (same run)", "certificate epsilon", "x",
+                             LogScale::kX, std::vector<PlotSeries>{{csv, 1, "6", "speedup"}});
   render_figure(figure, progress);
 }
 
@@ -146,14 +134,9 @@ void tolerance_plot(const std::vector<ToleranceTiming>& rows, const std::string&
   file << "tolerance,vertex_face_us,edge_edge_us\n";
   for (const ToleranceTiming& t : rows) file << t.tolerance << ',' << t.vertex_face_us << ',' << t.edge_edge_us << '\n';
   file.close();
-  const PlotPanel panel{"Kernels: run time against time-of-impact error",
-                        "time-of-impact tolerance",
-                        "mean time per query (us)",
-                        "",
-                        true,
-                        false,
-                        "top left",
-                        {{csv, 1, "2", "vertex-face"}, {csv, 1, "3", "edge-edge"}}};
+  const PlotPanel panel("Kernels: run time against time-of-impact error", "time-of-impact tolerance",
+                        "mean time per query (us)", LogScale::kX,
+                        {{csv, 1, "2", "vertex-face"}, {csv, 1, "3", "edge-edge"}});
   render_figure({dir + "/bench_toi_tolerance.png", 700, 450, {panel}}, progress);
 }
 

@@ -27,13 +27,10 @@ void write_time_plot(const DemoOptions& demo, const std::vector<double>& sscc, c
   file << "step,sscc_ms,traditional_ms\n";
   for (std::size_t k = 0; k < sscc.size(); ++k) file << k << ',' << sscc[k] << ',' << traditional[k] << '\n';
   file.close();
-  PlotPanel panel;
-  panel.title = "Continuous collision detection per step, " + demo.run.scene + " scene";
-  panel.x_label = "time step";
-  panel.y_label = "CCD time per step (ms)";
-  panel.log_y = true;
-  panel.series = {{csv, 1, "3", "traditional (swept-box BVH)", "lines lw 2"},
-                  {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}};
+  const PlotPanel panel(
+      "Continuous collision detection per step, " + demo.run.scene + " scene", "time step", "CCD time per step (ms)",
+      LogScale::kY,
+      {{csv, 1, "3", "traditional (swept-box BVH)", "lines lw 2"}, {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}});
   render_figure({output_path(demo, "time_per_step.png"), 900, 500, {panel}}, progress);
 }
 
@@ -55,12 +52,9 @@ void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Ce
     }
   }
   file.close();
-  PlotPanel panel;
-  panel.title = "Certificate radius per tree level, " + demo.run.scene + " scene";
-  panel.x_label = "tree level (0: root)";
-  panel.y_label = "certificate radius ||q||_M";
-  panel.log_y = true;
-  panel.series = {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}};
+  const PlotPanel panel("Certificate radius per tree level, " + demo.run.scene + " scene", "tree level (0: root)",
+                        "certificate radius ||q||_M", LogScale::kY,
+                        {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
   render_figure({output_path(demo, "radius_per_level.png"), 700, 500, {panel}}, progress);
 }
 
