@@ -27,6 +27,13 @@ class DemoScene {
   /// `mass`: one body's mass (kg); the basis must be the modal one (weights omega^2 / 2).
   DemoScene(const SubspaceModel& model, double mass, const SceneMotionOptions& motion);
 
+  /// One object: its modes, its rigid frame and when it is struck next (s).
+  struct Body {
+    ModalDynamics modes;
+    RigidFrame frame;
+    double next_strike = 0.0;
+  };
+
   /// A body's modes at rest: the model's frequencies, the motion's damping and time step.
   ModalDynamics modes_at_rest() const;
   /// The distance between neighbouring objects: `spacing` times the mesh's largest extent.

@@ -42,7 +42,7 @@ EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& 
   const double spacing = pitch(options.spacing);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
-    Body body{modes_at_rest(), {}, 0.0, false, 0.0};
+    FallingBody body{{modes_at_rest(), {}, 0.0}, 0.0, false};
     body.frame.rotation = Eigen::AngleAxisd(2 * M_PI * uniform(rng_), Eigen::Vector3d::UnitY()).toRotationMatrix();
     const double drop = options.drop_height_min + (options.drop_height_max - options.drop_height_min) * uniform(rng_);
     body.frame.translation = Eigen::Vector3d(spacing * (i % side), drop - lowest_, spacing * (i / side));
@@ -55,7 +55,7 @@ std::vector<ObjectStep> EarDrop::step() {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const double dt = options_.motion.dt;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    Body& b = bodies_[i];
+    FallingBody& b = bodies_[i];
     steps[i].q0 = b.modes.q();
     steps[i].frame0 = b.frame;
     if (!b.resting) {

@@ -37,16 +37,13 @@ class EarDrop : public DemoScene {
   std::vector<ObjectStep> step() override;
 
  private:
-  struct Body {
-    ModalDynamics modes;
-    RigidFrame frame;
+  struct FallingBody : Body {
     double vertical_velocity = 0.0;
     bool resting = false;
-    double next_strike = 0.0;  ///< s
   };
 
   EarDropOptions options_;
-  std::vector<Body> bodies_;
+  std::vector<FallingBody> bodies_;
   std::vector<int> bottom_;  ///< the vertices that touch the ground on landing
   std::vector<int> upper_;   ///< candidates for strike points
   double lowest_ = 0.0;      ///< rest mesh's lowest y

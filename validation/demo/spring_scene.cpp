@@ -44,14 +44,14 @@ SpringScene::SpringScene(const SubspaceModel& model, double mass, const SpringSc
   const double spacing = pitch(options.spacing);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
-    Spring s{modes_at_rest(), {}, options.strike_interval * (0.5 + 0.5 * uniform(rng_))};
+    Body s{modes_at_rest(), {}, options.strike_interval * (0.5 + 0.5 * uniform(rng_))};
     s.modes.hold_at(held);
     s.frame.translation = Eigen::Vector3d(spacing * i, 0.0, 0.0);
     springs_.push_back(s);
   }
 }
 
-void SpringScene::strike(Spring& s) {
+void SpringScene::strike(Body& s) {
   std::uniform_real_distribution<double> uniform(options_.strike_speed_min, options_.strike_speed_max);
   // Down onto the top coil, which passes the blow down the spring.
   s.modes.add_impulse(modal_impulse(model_, top_, Eigen::Vector3d(0, 0, -mass_ * uniform(rng_))));
@@ -61,7 +61,7 @@ void SpringScene::strike(Spring& s) {
 std::vector<ObjectStep> SpringScene::step() {
   std::vector<ObjectStep> steps(springs_.size());
   for (std::size_t i = 0; i < springs_.size(); ++i) {
-    Spring& s = springs_[i];
+    Body& s = springs_[i];
     if (time_ >= s.next_strike) {
       strike(s);
       s.next_strike = time_ + options_.strike_interval;

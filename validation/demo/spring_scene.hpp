@@ -36,16 +36,11 @@ class SpringScene : public DemoScene {
   std::vector<ObjectStep> step() override;
 
  private:
-  struct Spring {
-    ModalDynamics modes;
-    RigidFrame frame;
-    double next_strike;
-  };
-  void strike(Spring& s);
+  void strike(Body& s);
 
   SpringSceneOptions options_;
   std::vector<int> top_;  ///< the vertices a strike hits
-  std::vector<Spring> springs_;
+  std::vector<Body> springs_;
 };
 
 }  // namespace sscc::validation
