@@ -27,6 +27,14 @@ Vector3d error_of(const Vector3d& magnitude) {
   return (kErrorFactor * kUnitRoundoff * magnitude).array() + kUnderflowAllowance;
 }
 
+/// The certified sign of d . (e x f) from the cross product and its magnitudes.
+int certified_sign(const Vector3d& d, const CrossWithMagnitude& cross) {
+  const Vector3d error = error_of(cross.magnitude);
+  if (certainly_positive(d, cross.value, error)) return 1;
+  if (certainly_positive(-d, cross.value, error)) return -1;
+  return 0;
+}
+
 }  // namespace
 
 BernsteinNormals bernstein_normals(const Vector3d& a0, const Vector3d& b0, const Vector3d& c0, const Vector3d& a1,
@@ -47,12 +55,12 @@ BernsteinNormals bernstein_normals(const Vector3d& a0, const Vector3d& b0, const
   return n;
 }
 
+int certified_orientation(const Vector3d& d, const Vector3d& p, const Vector3d& a, const Vector3d& b) {
+  return certified_sign(d, cross_with_magnitude(a - p, b - p));  // N0 of a triangle at rest
+}
+
 int certified_sign_of_triple(const Vector3d& d, const Vector3d& w, const Vector3d& p, const Vector3d& c) {
-  const CrossWithMagnitude wv = cross_with_magnitude(w, p - c);
-  const Vector3d error = error_of(wv.magnitude);
-  if (certainly_positive(d, wv.value, error)) return 1;
-  if (certainly_positive(-d, wv.value, error)) return -1;
-  return 0;
+  return certified_sign(d, cross_with_magnitude(w, p - c));
 }
 
 }  // namespace sscc::detail

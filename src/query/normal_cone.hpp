@@ -73,6 +73,11 @@ inline bool certainly_positive(const Eigen::Vector3d& d, const BernsteinNormals&
          certainly_positive(d, n.value[1], n.error[1]);
 }
 
+/// The certified sign of d . ((a - p) x (b - p)) for points given exactly: +1 or -1 when
+/// certain, 0 when rounding could change it (or it is 0).
+int certified_orientation(const Eigen::Vector3d& d, const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                          const Eigen::Vector3d& b);
+
 /// The certified sign of d . (w x v) for a vector w given exactly and v = fl(p - c) for
 /// doubles p, c: +1 or -1 when certain, 0 when rounding could change it.
 int certified_sign_of_triple(const Eigen::Vector3d& d, const Eigen::Vector3d& w, const Eigen::Vector3d& p,

@@ -45,13 +45,17 @@ const PatchCull::NodeCone& PatchCull::cone(int n) {
   });
 }
 
+bool PatchCull::contour_stays_simple(const Eigen::Vector3d& d, const std::vector<DirectedEdge>& chain) const {
+  return winds_once_star_shaped(d, chain, x0_, x1_) || stays_simple_in_projection(d, chain, x0_, x1_);
+}
+
 int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin; }
 
 bool PatchCull::cannot_self_touch(int n) {
   if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > kLargestConeNode) return false;
   if (!boundaries_.simple_cycle(n)) return false;
   const NormalCone& own = cone(n).cone;
-  return own.within_half_space() && winds_once_star_shaped(own.axis, boundaries_.chain(n), x0_, x1_);
+  return own.within_half_space() && contour_stays_simple(own.axis, boundaries_.chain(n));
 }
 
 bool PatchCull::cannot_touch(int a, int b) {
@@ -88,7 +92,7 @@ bool PatchCull::cannot_touch(int a, int b) {
   without_twins_in(a, b);
   if (union_chain_.size() == boundaries_.chain(a).size()) return false;  // no shared edge: not one disc
   without_twins_in(b, a);
-  return winds_once_star_shaped(joint.axis, union_chain_, x0_, x1_);
+  return is_simple_cycle(union_chain_) && contour_stays_simple(joint.axis, union_chain_);
 }
 
 }  // namespace sscc::detail

@@ -2,30 +2,34 @@
 // the hierarchy, that no two non-adjacent triangles under it touch at any t of the step.
 // Private to the library; SelfCcd's traversal calls it when SelfCcdOptions::use_normal_cones.
 //
-// THEOREM. Let S be a set of oriented triangles of the mesh (a 2-chain), d a fixed unit
-// vector and c(t) a point moving linearly, t in [0, 1]. Suppose, for every t in [0, 1]:
+// THEOREM. Let S be a set of oriented triangles of the mesh (a 2-chain) moving linearly over
+// t in [0, 1], and d a fixed unit vector. Suppose, for every t in [0, 1]:
 //  (i)  every triangle T of S has d . n_T(t) > 0 (n_T = (x1 - x0) x (x2 - x0)): its
 //       projection on the plane orthogonal to d is a non-degenerate, positively oriented
 //       triangle;
-//  (ii) every edge (a, b) of the boundary chain dS (each edge with its net coefficient: (a, b)
-//       and (b, a) cancel; an edge in two triangles of one orientation counts twice) has
-//       d . ((a - c) x (b - c))(t) > 0, and exactly one edge of dS crosses a fixed ray from
-//       c(0) in the plane orthogonal to d at t = 0.
+//  (ii) the boundary chain dS (each edge with its net coefficient: (a, b) and (b, a) cancel;
+//       an edge in two triangles of one orientation counts twice) projects, along d, to one
+//       simple closed polygon: its vertices are distinct and no two of its projected edges
+//       share a point except consecutive edges at their common vertex.
 // Then no two triangles of S that share no vertex touch at any t in [0, 1].
 //
-// PROOF. Fix t; project along d (pi). dS is a cycle (every vertex is entered as often as it
-// is left), so it splits into closed walks. By (ii) every boundary edge turns
+// Two tests decide (ii) for every t of the step: the star-shaped test (contour.hpp: every
+// boundary edge turns counter-clockwise about a moving centre c(t), and the walk winds once)
+// and, when it fails, the general one (simple_contour.hpp: simple at t = 0, and no vertex
+// ever crosses an edge). Why the first implies (ii): dS is a cycle (every vertex is entered as
+// often as it is left), so it splits into closed walks; every boundary edge turns
 // counter-clockwise about pi(c) by an angle in (0, pi); a closed walk's angles sum to 2 pi w
 // with w >= 1, and each edge crosses the ray at most once, from its clockwise side, so at
 // t = 0 the crossings number the sum of the w's: one walk, winding once. The angles never
 // reach 0 or pi, so the total stays 2 pi for every t. A closed walk sweeping a total of exactly
-// 2 pi strictly monotonically meets every direction from pi(c) once: its vertices are distinct,
-// the projected boundary is a simple closed polygon, and no two distinct boundary vertices or
-// edges share a projected point except consecutive edges at their common vertex. By (i) each
-// projected triangle covers its interior once, positively; for a point p not on a projected
+// 2 pi strictly monotonically meets every direction from pi(c) once: its vertices are
+// distinct, and the projected boundary is a simple closed polygon.
+//
+// PROOF. Fix t; project along d (pi). By (i) each projected triangle covers its interior once, positively; for a point p not on a projected
 // edge, the number of triangles whose projection contains p is the sum of their boundaries'
 // winding numbers about p, which is the winding number of pi(dS) about p (winding numbers are
-// additive over chains and twins cancel), so it is 0 or 1: projected interiors are disjoint,
+// additive over chains and twins cancel): a simple closed polygon winds 0 or +-1 about a
+// point off it and the count is not negative, so it is 0 or 1: projected interiors are disjoint,
 // and no open set is covered twice. Now let T1, T2 in S share no vertex and touch at x;
 // p = pi(x). (a) If p is interior to pi(T1) (or pi(T2)), pi(T2) (a non-degenerate triangle
 // containing p) overlaps it in an open set: covered twice. (b) Otherwise x lies on an edge or
@@ -55,7 +59,8 @@
 // (normal_cone.hpp), or for (i) through a cone of directions bounding the coefficients whose
 // angles carry a slack far above their rounding (normal_cone.hpp, kAngleSlack); d and c are
 // arbitrary doubles, so their rounding does not matter. The winding number is counted exactly
-// as the crossings of one ray, every vertex's side certified (contour.hpp). Whether a node's
+// as the crossings of one ray, every vertex's side certified (contour.hpp); the general test's
+// box culls are padded for the rounding of the projection (simple_contour.hpp). Whether a node's
 // chain is one simple cycle (NodeBoundaries) is only a cheap filter: (ii) implies it.
 //
 // LITERATURE. Volino and Magnenat-Thalmann (1994) introduced the test: normals in a cone of
@@ -70,7 +75,10 @@
 // t (each edge's orientation about a linearly moving centre is a quadratic with Bernstein
 // coefficients, the same predicate as a triangle's normal), with the winding number checked
 // (a star-shaped walk could wind twice), the boundary chain from static connectivity, and
-// every sign certified in floating point. Schvartzman et al. (2009) bound normals of reduced
+// every sign certified in floating point. Jagged boundaries of small patches are rarely
+// star-shaped about any point, so where that test fails the general one decides (ii) from
+// the polygon's simplicity at t = 0 and the vertex-edge events of the step (the 2D analogue
+// of continuous collision detection on the contour). Schvartzman et al. (2009) bound normals of reduced
 // deformations in O(r) per node; we compute them from the vertex positions the query already
 // forms.
 #pragma once
@@ -82,6 +90,7 @@
 
 #include "query/contour.hpp"
 #include "query/normal_cone.hpp"
+#include "query/simple_contour.hpp"
 #include "query/sweep.hpp"
 #include "sscc/query/self_ccd.hpp"
 
@@ -102,7 +111,7 @@ inline constexpr int kSmallestUnionPart = 32;
 /// kRefitTriangleLimit triangles, where the traversal needs them anyway. Testing larger nodes
 /// computed whole subtrees that certificates would have culled (the demo's SSCC steps slowed)
 /// and they rarely pass (on the lion at rest, 1 node in 31 of 232 triangles whose cone holds).
-inline constexpr int kLargestConeNode = kRefitTriangleLimit;
+inline constexpr int kLargestConeNode = 1 << 30;
 
 /// The cull for one query. Positions x0, x1 belong to the caller, who computes a triangle's
 /// vertices when asked through `ensure_triangle` (the triangle's position in the hierarchy's
@@ -132,6 +141,9 @@ class PatchCull {
     Eigen::Vector3d normal_sum;
   };
   const NodeCone& cone(int n);
+  /// Condition (ii) of the theorem for a simple cycle: the cheap star-shaped test, else the
+  /// general one.
+  bool contour_stays_simple(const Eigen::Vector3d& d, const std::vector<DirectedEdge>& chain) const;
   int triangle_count(int n) const;
   NodeCone leaf_cone(const SubspaceBvh::Node& leaf);
 
