@@ -7,11 +7,12 @@
 namespace sscc::detail {
 
 PatchCull::PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
-                     const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle)
+                     const std::vector<Eigen::Vector3d>& x1, int largest_node, EnsureTriangle ensure_triangle)
     : bvh_(bvh),
       boundaries_(boundaries),
       x0_(x0),
       x1_(x1),
+      largest_node_(largest_node),
       ensure_triangle_(std::move(ensure_triangle)),
       cones_(bvh.nodes().size()) {}
 
@@ -52,7 +53,7 @@ bool PatchCull::contour_stays_simple(const Eigen::Vector3d& d, const std::vector
 int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin; }
 
 bool PatchCull::cannot_self_touch(int n) {
-  if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > kLargestConeNode) return false;
+  if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > largest_node_) return false;
   if (!boundaries_.simple_cycle(n)) return false;
   const NormalCone& own = cone(n).cone;
   return own.within_half_space() && contour_stays_simple(own.axis, boundaries_.chain(n));
@@ -62,7 +63,7 @@ bool PatchCull::cannot_touch(int a, int b) {
   // Each a disc (so every boundary edge has multiplicity one) whose normals stay in a
   // half-space: the union then often is one too.
   if (std::min(triangle_count(a), triangle_count(b)) < kSmallestUnionPart ||
-      std::max(triangle_count(a), triangle_count(b)) > kLargestConeNode) {
+      std::max(triangle_count(a), triangle_count(b)) > largest_node_) {
     return false;
   }
   if (!boundaries_.simple_cycle(a) || !boundaries_.simple_cycle(b)) return false;

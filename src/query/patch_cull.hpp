@@ -106,12 +106,14 @@ inline constexpr int kSmallestConeNode = kMaxLeafTriangles + 1;
 /// saving about balance). Lower: more pair culls, costlier; higher: fewer.
 inline constexpr int kSmallestUnionPart = 32;
 
-/// Nodes with more triangles are not tested (nor are pairs with such a part): a cone needs
-/// every vertex under the node, while the default hybrid bounds compute positions only below
-/// kRefitTriangleLimit triangles, where the traversal needs them anyway. Testing larger nodes
-/// computed whole subtrees that certificates would have culled (the demo's SSCC steps slowed)
-/// and they rarely pass (on the lion at rest, 1 node in 31 of 232 triangles whose cone holds).
-inline constexpr int kLargestConeNode = 1 << 30;
+/// With certificates, nodes with more triangles are not tested (nor are pairs with such a
+/// part): a cone needs every vertex under the node, while the default hybrid bounds compute
+/// positions only below kRefitTriangleLimit triangles, where the traversal needs them anyway.
+/// Testing larger nodes computed whole subtrees that certificates would have culled (the
+/// demo's SSCC steps slowed). Without certificates the traversal reaches nearly every vertex
+/// anyway, and nodes of every size are tested (halving the lion's node tests at amplitude
+/// 0.01 against this limit).
+inline constexpr int kLargestConeNodeWithCertificates = kRefitTriangleLimit;
 
 /// The cull for one query. Positions x0, x1 belong to the caller, who computes a triangle's
 /// vertices when asked through `ensure_triangle` (the triangle's position in the hierarchy's
@@ -122,8 +124,9 @@ inline constexpr int kLargestConeNode = 1 << 30;
 class PatchCull {
  public:
   using EnsureTriangle = std::function<void(int)>;
+  /// `largest_node`: nodes (and parts of pairs) with more triangles are not tested.
   PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
-            const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle);
+            const std::vector<Eigen::Vector3d>& x1, int largest_node, EnsureTriangle ensure_triangle);
 
   /// Whether node n's triangles provably never touch one another during the step (tried for
   /// nodes of at least kSmallestConeNode triangles).
@@ -151,6 +154,7 @@ class PatchCull {
   const NodeBoundaries& boundaries_;
   const std::vector<Eigen::Vector3d>& x0_;
   const std::vector<Eigen::Vector3d>& x1_;
+  int largest_node_;
   EnsureTriangle ensure_triangle_;
   LazyBoxes<NodeCone> cones_;
   std::vector<DirectedEdge> union_chain_;  // scratch of cannot_touch

@@ -59,9 +59,10 @@ SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
  public:
-  /// s = max(||q_hat0||, ||q_hat1||). `boundaries` null: no normal-cone cull.
+  /// s = max(||q_hat0||, ||q_hat1||). `boundaries` null: no normal-cone cull; `certified`:
+  /// the traversal uses certificates (cones are then tried on small nodes only).
   StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
-              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries)
+              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, bool certified)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
@@ -79,7 +80,9 @@ class StepContext {
         triangle_sweeps_(mesh_.triangle_count()),
         hits_(options.mode, &stats_.kernel_calls) {
     if (boundaries && options.use_normal_cones && separation_ == 0.0) {
-      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, [this](int i) {
+      const int largest =
+          certified ? detail::kLargestConeNodeWithCertificates : bvh.model().mesh().triangle_count();
+      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, largest, [this](int i) {
         for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
       });
     }
@@ -89,7 +92,7 @@ class StepContext {
   /// hold): every vertex known, boxes refitted.
   StepContext(const SubspaceBvh& bvh, std::vector<Eigen::Vector3d> x0, std::vector<Eigen::Vector3d> x1,
               const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries)
-      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, boundaries) {
+      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, boundaries, false) {
     x0_ = std::move(x0);
     x1_ = std::move(x1);
     std::fill(computed_.begin(), computed_.end(), 1);
@@ -521,11 +524,11 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   const int threads = detail::resolve_threads(options.threads);
   if (threads > 1) {
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get());
+      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), certificates);
     };
     return parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
   }
-  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get());
+  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), certificates);
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
@@ -583,7 +586,8 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const auto start = std::chrono::steady_clock::now();
   const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
-  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, nullptr);
+  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, nullptr,
+                      false);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
     for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);
