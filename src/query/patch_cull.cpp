@@ -14,7 +14,8 @@ PatchCull::PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, c
       x1_(x1),
       largest_node_(largest_node),
       ensure_triangle_(std::move(ensure_triangle)),
-      cones_(bvh.nodes().size()) {}
+      cones_(bvh.nodes().size()),
+      self_verdicts_(bvh.nodes().size()) {}
 
 PatchCull::NodeCone PatchCull::leaf_cone(const SubspaceBvh::Node& leaf) {
   std::array<BernsteinNormals, kMaxLeafTriangles> normals;
@@ -54,22 +55,22 @@ int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end
 
 bool PatchCull::cannot_self_touch(int n) {
   if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > largest_node_) return false;
-  if (!boundaries_.simple_cycle(n)) return false;
-  const NormalCone& own = cone(n).cone;
-  return own.within_half_space() && contour_stays_simple(own.axis, boundaries_.chain(n));
+  return self_verdicts_.get(n, [&](int m) -> char {
+    if (!boundaries_.simple_cycle(m)) return 0;
+    const NormalCone& own = cone(m).cone;
+    return own.within_half_space() && contour_stays_simple(own.axis, boundaries_.chain(m));
+  }) != 0;
 }
 
 bool PatchCull::cannot_touch(int a, int b) {
-  // Each a disc (so every boundary edge has multiplicity one) whose normals stay in a
-  // half-space: the union then often is one too.
-  if (std::min(triangle_count(a), triangle_count(b)) < kSmallestUnionPart ||
-      std::max(triangle_count(a), triangle_count(b)) > largest_node_) {
-    return false;
-  }
-  if (!boundaries_.simple_cycle(a) || !boundaries_.simple_cycle(b)) return false;
+  const int smaller = std::min(triangle_count(a), triangle_count(b));
+  const int larger = std::max(triangle_count(a), triangle_count(b));
+  if (smaller < kSmallestUnionPart || larger > kLargestUnionRatio * smaller) return false;
+  // Each part proven on its own (a disc whose normals stay in a half-space, its contour
+  // simple): the union often is one too, and otherwise rarely.
+  if (!cannot_self_touch(a) || !cannot_self_touch(b)) return false;
   const NodeCone& cone_a = cone(a);
   const NodeCone& cone_b = cone(b);
-  if (!cone_a.cone.within_half_space() || !cone_b.cone.within_half_space()) return false;
   const std::array<NormalCone, 2> parts{cone_a.cone, cone_b.cone};
   const NormalCone joint = merged_cone(cone_a.normal_sum + cone_b.normal_sum, parts.data(), parts.data() + 2);
   if (!joint.within_half_space()) return false;

@@ -211,8 +211,7 @@ class StepContext {
 
   void ensure_vertex(int v) {
     if (computed_[v]) return;
-    x0_[v] = bvh_.model().position(v, q_hat0_);
-    x1_[v] = bvh_.model().position(v, q_hat1_);
+    bvh_.model().position_pair(v, q_hat0_, q_hat1_, x0_[v], x1_[v]);
     computed_[v] = 1;
     ++stats_.vertices_computed;
   }

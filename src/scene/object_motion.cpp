@@ -43,8 +43,10 @@ void ObjectMotion::ensure(int v) {
   Cache& c = cache();
   if (c.computed[v]) return;
   const SubspaceModel& model = bvh_.model();
-  c.x0[v] = frame0_.rotation * model.position(v, q_hat0_) + frame0_.translation;
-  c.x1[v] = frame1_.rotation * model.position(v, q_hat1_) + frame1_.translation;
+  Eigen::Vector3d local0, local1;
+  model.position_pair(v, q_hat0_, q_hat1_, local0, local1);
+  c.x0[v] = frame0_.rotation * local0 + frame0_.translation;
+  c.x1[v] = frame1_.rotation * local1 + frame1_.translation;
   c.computed[v] = 1;
   ++vertices_computed_;
 }

@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
+
 #include <memory>
 #include <vector>
 
@@ -35,9 +37,36 @@ class SubspaceModel {
   Eigen::VectorXd scaled_coordinates(const Eigen::VectorXd& q) const;
   /// ||q||_M.
   double weighted_norm(const Eigen::VectorXd& q) const;
-  /// Vertex v's position for scaled coordinates q_hat (3r flops).
+  /// Vertex v's position for scaled coordinates q_hat (3r flops): rest position plus each row
+  /// of its block dotted with q_hat in order (the rounding every bound allows for: an r-term
+  /// dot product and one addition).
   Eigen::Vector3d position(int v, const Eigen::VectorXd& q_hat) const {
-    return state_->mesh.vertices()[v] + state_->scaled_basis.middleRows<3>(3 * v) * q_hat;
+    const int r = static_cast<int>(q_hat.size());
+    const double* rows = state_->scaled_basis.data() + 3 * static_cast<std::ptrdiff_t>(v) * r;
+    const double* q = q_hat.data();
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < r; ++k) {
+      for (int i = 0; i < 3; ++i) sum[i] += rows[i * r + k] * q[k];
+    }
+    return state_->mesh.vertices()[v] + Eigen::Vector3d(sum[0], sum[1], sum[2]);
+  }
+  /// position(v, q_hat0) and position(v, q_hat1) (the same operations in the same order) in one pass over v's rows of
+  /// the basis (the queries need both ends of a step).
+  void position_pair(int v, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, Eigen::Vector3d& x0,
+                     Eigen::Vector3d& x1) const {
+    const int r = static_cast<int>(q_hat0.size());
+    const double* rows = state_->scaled_basis.data() + 3 * static_cast<std::ptrdiff_t>(v) * r;
+    const double* q0 = q_hat0.data();
+    const double* q1 = q_hat1.data();
+    double sum0[3] = {0.0, 0.0, 0.0}, sum1[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < r; ++k) {
+      for (int i = 0; i < 3; ++i) {
+        sum0[i] += rows[i * r + k] * q0[k];
+        sum1[i] += rows[i * r + k] * q1[k];
+      }
+    }
+    x0 = state_->mesh.vertices()[v] + Eigen::Vector3d(sum0[0], sum0[1], sum0[2]);
+    x1 = state_->mesh.vertices()[v] + Eigen::Vector3d(sum1[0], sum1[1], sum1[2]);
   }
   /// All positions for coordinates q (not scaled).
   std::vector<Eigen::Vector3d> deformed_positions(const Eigen::VectorXd& q) const;
