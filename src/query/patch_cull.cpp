@@ -7,12 +7,11 @@
 namespace sscc::detail {
 
 PatchCull::PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
-                     const std::vector<Eigen::Vector3d>& x1, int largest_node, EnsureTriangle ensure_triangle)
+                     const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle)
     : bvh_(bvh),
       boundaries_(boundaries),
       x0_(x0),
       x1_(x1),
-      largest_node_(largest_node),
       ensure_triangle_(std::move(ensure_triangle)),
       cones_(bvh.nodes().size()),
       self_verdicts_(bvh.nodes().size()) {}
@@ -53,8 +52,8 @@ bool PatchCull::contour_stays_simple(const Eigen::Vector3d& d, const std::vector
 
 int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin; }
 
-bool PatchCull::cannot_self_touch(int n) {
-  if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > largest_node_) return false;
+bool PatchCull::cannot_self_touch(int n, int largest) {
+  if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > largest) return false;
   return self_verdicts_.get(n, [&](int m) -> char {
     if (!boundaries_.simple_cycle(m)) return 0;
     const NormalCone& own = cone(m).cone;
@@ -62,13 +61,13 @@ bool PatchCull::cannot_self_touch(int n) {
   }) != 0;
 }
 
-bool PatchCull::cannot_touch(int a, int b) {
+bool PatchCull::cannot_touch(int a, int b, int largest) {
   const int smaller = std::min(triangle_count(a), triangle_count(b));
   const int larger = std::max(triangle_count(a), triangle_count(b));
   if (smaller < kSmallestUnionPart || larger > kLargestUnionRatio * smaller) return false;
   // Each part proven on its own (a disc whose normals stay in a half-space, its contour
   // simple): the union often is one too, and otherwise rarely.
-  if (!cannot_self_touch(a) || !cannot_self_touch(b)) return false;
+  if (!cannot_self_touch(a, largest) || !cannot_self_touch(b, largest)) return false;
   const NodeCone& cone_a = cone(a);
   const NodeCone& cone_b = cone(b);
   const std::array<NormalCone, 2> parts{cone_a.cone, cone_b.cone};

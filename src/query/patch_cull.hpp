@@ -113,13 +113,13 @@ inline constexpr int kSmallestUnionPart = 32;
 /// than the culls saved). Higher: more tests of lopsided pairs; lower: none after a failure.
 inline constexpr int kLargestUnionRatio = 4;
 
-/// With certificates, nodes with more triangles are not tested (nor are pairs with such a
-/// part): a cone needs every vertex under the node, while the default hybrid bounds compute
-/// positions only below kRefitTriangleLimit triangles, where the traversal needs them anyway.
-/// Testing larger nodes computed whole subtrees that certificates would have culled (the
-/// demo's SSCC steps slowed). Without certificates the traversal reaches nearly every vertex
-/// anyway, and nodes of every size are tested (halving the lion's node tests at amplitude
-/// 0.01 against this limit).
+/// Where certificates may still cull below a node (self_ccd.cpp decides), nodes with more triangles are not tested
+/// (nor are pairs with such a part): a cone needs every vertex under the node, while the
+/// default hybrid bounds compute positions only below kRefitTriangleLimit triangles, where the
+/// traversal needs them anyway. Testing larger nodes computed whole subtrees that
+/// certificates would have culled (on the lion at amplitude 0.1, 7.8 ms per step against 5.4
+/// without cones). Without certificates the traversal reaches nearly every vertex anyway, and
+/// nodes of every size are tested (halving the lion's node tests at amplitude 0.01).
 inline constexpr int kLargestConeNodeWithCertificates = kRefitTriangleLimit;
 
 /// The cull for one query. Positions x0, x1 belong to the caller, who computes a triangle's
@@ -131,17 +131,16 @@ inline constexpr int kLargestConeNodeWithCertificates = kRefitTriangleLimit;
 class PatchCull {
  public:
   using EnsureTriangle = std::function<void(int)>;
-  /// `largest_node`: nodes (and parts of pairs) with more triangles are not tested.
   PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
-            const std::vector<Eigen::Vector3d>& x1, int largest_node, EnsureTriangle ensure_triangle);
+            const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle);
 
   /// Whether node n's triangles provably never touch one another during the step (tried for
-  /// nodes of at least kSmallestConeNode triangles).
-  bool cannot_self_touch(int n);
+  /// nodes of kSmallestConeNode to `largest` triangles).
+  bool cannot_self_touch(int n, int largest);
   /// Whether the union of the disjoint nodes a and b provably has no touching pair (tried when
   /// each is a disc of at least kSmallestUnionPart triangles whose normals stay in a
   /// half-space).
-  bool cannot_touch(int a, int b);
+  bool cannot_touch(int a, int b, int largest);
 
  private:
   /// A node's normal cone and the sum of its triangles' coefficient vectors (area-weighted
@@ -161,7 +160,6 @@ class PatchCull {
   const NodeBoundaries& boundaries_;
   const std::vector<Eigen::Vector3d>& x0_;
   const std::vector<Eigen::Vector3d>& x1_;
-  int largest_node_;
   EnsureTriangle ensure_triangle_;
   LazyBoxes<NodeCone> cones_;
   LazyBoxes<char> self_verdicts_;  // cannot_self_touch's answers, once per node

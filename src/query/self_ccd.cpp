@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -38,6 +39,15 @@ using detail::Sweep;
 using detail::sweeps_may_touch;
 using detail::swept_overlap;
 
+/// Past this multiple of a node's certificate radius (s > ratio R_n) the certificates of its
+/// descendants rarely hold either (radii grow by about 1.6 per level on the meshes measured):
+/// the traversal then tries normal cones on the node whatever its size, and past the root's
+/// computes every vertex up front, as without certificates. Lower: work that certificates
+/// would have saved; higher: steps far outside the certificates cost more than without them
+/// (measured: the knot at amplitude 0.2, 19.1 ms with certificates against 18.0 without,
+/// before this rule; 17.3 against 17.5 with it).
+constexpr double kFarPastCertificateRatio = 2.0;
+
 SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<FeatureContact> features,
                             SelfCcdStats stats, std::chrono::steady_clock::time_point start) {
   SelfCcdReport report;
@@ -59,10 +69,10 @@ SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
  public:
-  /// s = max(||q_hat0||, ||q_hat1||). `boundaries` null: no normal-cone cull; `certified`:
-  /// the traversal uses certificates (cones are then tried on small nodes only).
+  /// s = max(||q_hat0||, ||q_hat1||). `boundaries` null: no normal-cone cull; `every_vertex`:
+  /// compute every vertex up front (the traversal will reach nearly all), else on demand.
   StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
-              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, bool certified)
+              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, bool every_vertex)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
@@ -79,17 +89,14 @@ class StepContext {
         node_sweeps_(bvh.nodes().size()),
         triangle_sweeps_(mesh_.triangle_count()),
         hits_(options.mode, &stats_.kernel_calls) {
-    // Without certificates the traversal reaches nearly every vertex (neighbouring leaves'
-    // boxes always meet): one pass in vertex order streams the basis once, where computing
-    // them on demand reads its rows in the hierarchy's order (measured on the 75k-triangle
-    // bunny: a quarter of the query's time went to those reads).
-    if (!certified && q_hat0.size() > 0) {
+    // One pass in vertex order streams the basis once, where computing vertices on demand
+    // reads its rows in the hierarchy's order (measured on the 75k-triangle bunny without
+    // certificates: a quarter of the query's time went to those reads).
+    if (every_vertex && q_hat0.size() > 0) {
       for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
     }
     if (boundaries && options.use_normal_cones && separation_ == 0.0) {
-      const int largest =
-          certified ? detail::kLargestConeNodeWithCertificates : bvh.model().mesh().triangle_count();
-      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, largest, [this](int i) {
+      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, [this](int i) {
         for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
       });
     }
@@ -118,9 +125,12 @@ class StepContext {
   }
   bool stopped() const { return hits_.stopped() || (cancel_ && cancel_->cancels(task_)); }
   SelfCcdStats& stats() { return stats_; }
-  /// The normal-cone cull (patch_cull.hpp) of a node, and of the union of two nodes.
-  bool node_cannot_self_touch(int n) { return patch_cull_ && patch_cull_->cannot_self_touch(n); }
-  bool nodes_cannot_touch(int a, int b) { return patch_cull_ && patch_cull_->cannot_touch(a, b); }
+  /// The normal-cone cull (patch_cull.hpp) of a node, and of the union of two nodes, tried
+  /// on nodes of at most `largest` triangles.
+  bool node_cannot_self_touch(int n, int largest) { return patch_cull_ && patch_cull_->cannot_self_touch(n, largest); }
+  bool nodes_cannot_touch(int a, int b, int largest) {
+    return patch_cull_ && patch_cull_->cannot_touch(a, b, largest);
+  }
 
   /// The parallel layer: the next task this context runs (its hits are taken with
   /// take_hits before the next one); `cancel`, in the modes that stop at a hit, tells when
@@ -325,7 +335,7 @@ class Traversal {
       return;
     }
     if (frontier_ && frontier_->take(n, n)) return;
-    if (context_.node_cannot_self_touch(n)) {
+    if (context_.node_cannot_self_touch(n, largest_cone_node(certificates_ ? certificates_->node_radius(n) : 0.0))) {
       ++context_.stats().cone_culled;
       return;
     }
@@ -351,7 +361,8 @@ class Traversal {
     }
     if (frontier_ && frontier_->take(a, b)) return;
     if (!context_.nodes_overlap(a, b)) return;
-    if (context_.nodes_cannot_touch(a, b)) {
+    if (context_.nodes_cannot_touch(a, b,
+                                    largest_cone_node(certificates_ ? certificates_->sibling_radius(a, b) : 0.0))) {
       ++context_.stats().cone_culled;
       return;
     }
@@ -369,6 +380,14 @@ class Traversal {
   }
 
  private:
+  /// The largest node tried for a cone where the certificate radius is `radius`
+  /// (patch_cull.hpp: small nodes only while certificates may still cull below).
+  int largest_cone_node(double radius) const {
+    return certificates_ && !(s_ > kFarPastCertificateRatio * radius)
+               ? detail::kLargestConeNodeWithCertificates
+               : std::numeric_limits<int>::max();
+  }
+
   const SubspaceBvh& bvh_;
   Context& context_;
   const Certificates* certificates_;
@@ -435,8 +454,8 @@ class DiscreteContext {
   }
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
-  bool node_cannot_self_touch(int) const { return false; }  // the cones are a continuous cull
-  bool nodes_cannot_touch(int, int) const { return false; }
+  bool node_cannot_self_touch(int, int) const { return false; }  // the cones are a continuous cull
+  bool nodes_cannot_touch(int, int, int) const { return false; }
   bool triangle_meets_node(int, int) const { return true; }
 
   /// The triangles at positions i and j of the BVH's order.
@@ -527,14 +546,17 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   const double s = std::max(q_hat0.stableNorm(), q_hat1.stableNorm());
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
+  // Without certificates, or far past the root's, the traversal reaches nearly every vertex
+  // (neighbouring leaves' boxes always meet).
+  const bool every_vertex = !certificates || s > kFarPastCertificateRatio * certificates->node_radius(0);
   const int threads = detail::resolve_threads(options.threads);
   if (threads > 1) {
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), certificates);
+      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), every_vertex);
     };
     return parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
   }
-  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), certificates);
+  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), every_vertex);
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
@@ -593,7 +615,7 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, nullptr,
-                      false);
+                      true);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
     for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "brute_force.hpp"
@@ -188,8 +189,8 @@ TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour o
       const auto n = sscc::detail::bernstein_normals(x[t[0]], x[t[1]], x[t[2]], x[t[0]], x[t[1]], x[t[2]]);
       REQUIRE(sscc::detail::certainly_positive(Vector3d(0, 0, -1), n));
     }
-    sscc::detail::PatchCull cull(bvh, boundaries, x, x, model.mesh().triangle_count(), [](int) {});
-    CHECK_FALSE(cull.cannot_self_touch(0));
+    sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
+    CHECK_FALSE(cull.cannot_self_touch(0, std::numeric_limits<int>::max()));
   }
   // A short piece of the ramp (54 degrees) is a star-shaped disc in projection: culled.
   const int short_nu = 6;
@@ -199,8 +200,8 @@ TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour o
                                   Eigen::MatrixXd::Zero(3 * x.size(), 1), Eigen::VectorXd::Ones(1));
   const sscc::SubspaceBvh bvh(model);
   const sscc::detail::NodeBoundaries boundaries(bvh);
-  sscc::detail::PatchCull cull(bvh, boundaries, x, x, model.mesh().triangle_count(), [](int) {});
-  CHECK(cull.cannot_self_touch(0));
+  sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
+  CHECK(cull.cannot_self_touch(0, std::numeric_limits<int>::max()));
 }
 
 TEST_CASE("normal cones: every node and node pair the cull accepts has no touching pair under brute force",
@@ -223,7 +224,7 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
     for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) {
       const auto x0 = model.deformed_positions(sscc::test::keyframe_q(modes, k));
       const auto x1 = model.deformed_positions(sscc::test::keyframe_q(modes, k + 1));
-      sscc::detail::PatchCull cull(bvh, boundaries, x0, x1, mesh.triangle_count(), [](int) {});
+      sscc::detail::PatchCull cull(bvh, boundaries, x0, x1, [](int) {});
       // No non-adjacent pair among the triangles at positions [begin, end) and [begin2, end2)
       // (the same range twice for a node alone) touches during the step.
       const auto no_contact = [&](int begin, int end, int begin2, int end2) {
@@ -241,7 +242,7 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
       };
       INFO(c.name << ": keyframe " << k << " to " << k + 1);
       for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
-        if (!cull.cannot_self_touch(n)) continue;
+        if (!cull.cannot_self_touch(n, std::numeric_limits<int>::max())) continue;
         ++accepted_nodes;
         REQUIRE(
             no_contact(nodes[n].triangle_begin, nodes[n].triangle_end, nodes[n].triangle_begin, nodes[n].triangle_end));
@@ -250,7 +251,7 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
         for (int b = a + 1; b < static_cast<int>(nodes.size()); ++b) {
           const bool disjoint =
               nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
-          if (!disjoint || !cull.cannot_touch(a, b)) continue;
+          if (!disjoint || !cull.cannot_touch(a, b, std::numeric_limits<int>::max())) continue;
           ++accepted_pairs;
           // Pairs within each node are the node's own test; here the pairs across.
           REQUIRE(no_contact(nodes[a].triangle_begin, nodes[a].triangle_end, nodes[b].triangle_begin,
