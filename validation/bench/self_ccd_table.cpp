@@ -1,5 +1,7 @@
 #include "bench/self_ccd_table.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -7,6 +9,7 @@
 
 #include "fcl_self_ccd.hpp"
 #include "model_loading.hpp"
+#include "sscc/certificates/certificates.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "trajectory.hpp"
 
@@ -24,6 +27,30 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
+/// The mesh's certificates from the cache, or computed and cached when absent or stale.
+Certificates cached_certificates(const SubspaceBvh& bvh, const std::string& mesh, const SelfCcdTableOptions& o,
+                                 std::ostream& progress) {
+  std::string basis = o.basis;
+  std::replace(basis.begin(), basis.end(), ':', '-');
+  const std::string path =
+      (std::filesystem::path(o.cache_dir) / (std::filesystem::path(mesh).stem().string() + "-" + basis + ".sscc"))
+          .string();
+  if (std::filesystem::exists(path)) {
+    try {
+      return Certificates::read(path, bvh);
+    } catch (const CertificateFileError& e) {
+      progress << "self-CCD table: " << e.what() << ": recomputing\n";
+    }
+  }
+  progress << "self-CCD table: certificates of " << mesh << " (cached in " << path << ")\n";
+  const Certificates certificates = Certificates::precompute(bvh, {}, [&](int done, int levels) {
+    progress << "precompute: level " << done << "/" << levels << " done\n" << std::flush;
+  });
+  std::filesystem::create_directories(o.cache_dir);
+  certificates.write(path);
+  return certificates;
+}
+
 }  // namespace
 
 std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::ostream& progress) {
@@ -31,10 +58,13 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
   for (const std::string& mesh : o.meshes) {
     const SubspaceModel model = load_model({mesh, o.basis, ""}, progress);
     const SubspaceBvh bvh(model);
-    const SelfCcd ccd(bvh);
-    SelfCcdOptions traditional, cones;
-    traditional.use_certificates = cones.use_certificates = false;
-    cones.use_normal_cones = true;
+    const SelfCcd ccd(bvh, cached_certificates(bvh, mesh, o, progress));
+    enum Method { kTraditional, kCones, kSscc, kMethods };
+    std::array<SelfCcdOptions, kMethods> options;
+    options[kTraditional].use_certificates = options[kCones].use_certificates = false;
+    options[kTraditional].use_normal_cones = false;
+    options[kCones].use_normal_cones = true;
+    for (SelfCcdOptions& each : options) each.threads = 1;
     FclSelfCcd fcl(model.mesh());
     for (double amplitude : o.amplitudes) {
       progress << "self-CCD table: " << mesh << " amplitude " << amplitude << '\n';
@@ -43,21 +73,27 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
       row.mesh = std::filesystem::path(mesh).stem().string();
       row.triangles = model.mesh().triangle_count();
       row.amplitude = amplitude;
+      row.root_radius = ccd.certificates()->node_radius(0);
+      const std::array<double*, kMethods> milliseconds{&row.traditional_ms, &row.cones_ms, &row.sscc_ms};
+      const std::array<double*, kMethods> nodes{&row.traditional_nodes, &row.cones_nodes, &row.sscc_nodes};
       for (int k = 0; k < o.steps; ++k) {
-        // Alternate which runs first, so that neither always finds the caches warm.
-        SelfCcdReport plain, culled;
-        for (int order = 0; order < 2; ++order) {
-          const bool plain_now = (order == 0) == (k % 2 == 0);
+        // Rotate which runs first, so that none always finds the caches warm.
+        std::array<SelfCcdReport, kMethods> reports;
+        for (int i = 0; i < kMethods; ++i) {
+          const int m = (i + k) % kMethods;
           const auto start = std::chrono::steady_clock::now();
-          (plain_now ? plain : culled) = ccd.query(q[k], q[k + 1], plain_now ? traditional : cones);
-          (plain_now ? row.traditional_ms : row.cones_ms) += milliseconds_since(start) / o.steps;
+          reports[m] = ccd.query(q[k], q[k + 1], options[m]);
+          *milliseconds[m] += milliseconds_since(start) / o.steps;
+          *nodes[m] += static_cast<double>(reports[m].stats.box_tests) / o.steps;
         }
-        row.traditional_nodes += static_cast<double>(plain.stats.box_tests) / o.steps;
-        row.cones_nodes += static_cast<double>(culled.stats.box_tests) / o.steps;
-        row.traditional_pairs += static_cast<double>(plain.stats.triangle_pairs) / o.steps;
-        row.cones_pairs += static_cast<double>(culled.stats.triangle_pairs) / o.steps;
-        row.colliding_steps += plain.collided();
-        row.identical = row.identical && plain.pairs == culled.pairs && plain.features == culled.features;
+        row.traditional_pairs += static_cast<double>(reports[kTraditional].stats.triangle_pairs) / o.steps;
+        row.cones_pairs += static_cast<double>(reports[kCones].stats.triangle_pairs) / o.steps;
+        row.root_certified_steps += reports[kSscc].stats.root_certified;
+        row.colliding_steps += reports[kTraditional].collided();
+        for (int m : {kCones, kSscc}) {
+          row.identical = row.identical && reports[m].pairs == reports[kTraditional].pairs &&
+                          reports[m].features == reports[kTraditional].features;
+        }
       }
       const int fcl_steps = std::min(o.fcl_steps, o.steps);
       for (int k = 0; k < fcl_steps; ++k) {
@@ -75,16 +111,20 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
 
 std::string self_ccd_table_markdown(const std::vector<SelfCcdTableRow>& rows) {
   std::ostringstream md;
-  md << "| mesh | triangles | amplitude | traditional | cones | FCL | cones vs traditional | FCL vs cones | "
-        "node tests (trad / cones) | triangle pairs (trad / cones) | colliding | identical |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| mesh | triangles | amplitude | traditional | cones | SSCC | FCL | cones vs traditional | SSCC vs cones | "
+        "SSCC vs traditional | FCL vs cones | root-certified steps | node tests (trad / cones / SSCC) | "
+        "triangle pairs (trad / cones) | colliding | identical |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SelfCcdTableRow& r : rows) {
     md << "| " << r.mesh << " | " << r.triangles << " | " << r.amplitude << " | " << format("%.2f ms", r.traditional_ms)
-       << " | " << format("%.2f ms", r.cones_ms) << " | " << format("%.1f ms", r.fcl_ms) << " | "
-       << format("%.2fx", r.traditional_ms / r.cones_ms) << " | " << format("%.1fx", r.fcl_ms / r.cones_ms) << " | "
-       << format("%.0f", r.traditional_nodes) << " / " << format("%.0f", r.cones_nodes) << " | "
-       << format("%.0f", r.traditional_pairs) << " / " << format("%.0f", r.cones_pairs) << " | " << r.colliding_steps
-       << " | " << (r.identical ? "yes" : "no") << " |\n";
+       << " | " << format("%.2f ms", r.cones_ms) << " | " << format("%.3f ms", r.sscc_ms) << " | "
+       << format("%.1f ms", r.fcl_ms) << " | " << format("%.2fx", r.traditional_ms / r.cones_ms) << " | "
+       << format("%.2fx", r.cones_ms / r.sscc_ms) << " | " << format("%.2fx", r.traditional_ms / r.sscc_ms) << " | "
+       << format("%.1fx", r.fcl_ms / r.cones_ms) << " | " << r.root_certified_steps << " | "
+       << format("%.0f", r.traditional_nodes) << " / " << format("%.0f", r.cones_nodes) << " / "
+       << format("%.0f", r.sscc_nodes) << " | " << format("%.0f", r.traditional_pairs) << " / "
+       << format("%.0f", r.cones_pairs) << " | " << r.colliding_steps << " | " << (r.identical ? "yes" : "no")
+       << " |\n";
   }
   return md.str();
 }

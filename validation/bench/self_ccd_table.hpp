@@ -1,7 +1,8 @@
 // The self-CCD table of `sscc bench`: on every mesh of ../shared/data/meshes, polynomial
 // modes, random trajectories at a few amplitudes, the traditional query (plain swept boxes),
-// the query with normal cones, and FCL's traversal, one thread each, on the same steps; time,
-// node tests and triangle-pair tests per step, and whether traditional and cones agree.
+// the query with normal cones, SSCC (the certificates, computed once per mesh and cached) and
+// FCL's traversal, one thread each, on the same steps; time, node tests and triangle-pair
+// tests per step, and whether the three queries agree.
 // Step counts are small so that the table takes minutes (FCL is slow on the 75k bunny).
 #pragma once
 
@@ -19,17 +20,20 @@ struct SelfCcdTableOptions {
   int fcl_steps = 2;  ///< the first steps of the same trajectory, for FCL
   std::string basis = "polynomial:27";
   std::uint64_t seed = 1;
+  std::string cache_dir = "demo-cache";  ///< each mesh's certificate file, computed when absent or stale
 };
 
 struct SelfCcdTableRow {
   std::string mesh;
   int triangles = 0;
   double amplitude = 0.0;
-  double traditional_ms = 0.0, cones_ms = 0.0, fcl_ms = 0.0;  ///< mean per step
-  double traditional_nodes = 0.0, cones_nodes = 0.0;          ///< node (box) tests per step
-  double traditional_pairs = 0.0, cones_pairs = 0.0;          ///< triangle-pair tests per step
+  double traditional_ms = 0.0, cones_ms = 0.0, sscc_ms = 0.0, fcl_ms = 0.0;  ///< mean per step
+  double traditional_nodes = 0.0, cones_nodes = 0.0, sscc_nodes = 0.0;        ///< node (box) tests per step
+  double traditional_pairs = 0.0, cones_pairs = 0.0;                          ///< triangle-pair tests per step
+  double root_radius = 0.0;
+  int root_certified_steps = 0;  ///< steps SSCC decided by the root's certificate alone
   int colliding_steps = 0;
-  bool identical = true;  ///< traditional and cones reported the same pairs on every step
+  bool identical = true;  ///< traditional, cones and SSCC reported the same features on every step
 };
 
 /// Runs the table; progress goes to `progress`.
