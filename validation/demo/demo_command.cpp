@@ -177,6 +177,8 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
   }
   out << "\n";
   print_contacts(run, out);
+  out << "largest deformation ||q||_M at a step's end: " << run.largest_norm << " (root certificate radius "
+      << run.assets.certificates->node_radius(0) << ")\n";
   out << "impacts and strikes: " << run.impacts << "; total time " << run.seconds << " s; plots and CSV in "
       << demo.output_dir << (sound.empty() ? "" : "; sound in " + sound) << "\n";
   std::snprintf(line, sizeof line,

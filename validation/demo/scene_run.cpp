@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -180,6 +181,10 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     s.motion = motion;
     s.response.restitution = kSteelRestitution;
     if (run.dt < 1e-3) s.strike_interval = kSpringStrikeInterval;  // audio rate: a second of clatter
+    if (const char* e = std::getenv("SSCC_EXP_STRIKE")) { s.strike_speed_min = std::atof(e); s.strike_speed_max = 1.5 * std::atof(e); }
+    if (const char* e = std::getenv("SSCC_EXP_INTERVAL")) s.strike_interval = std::atof(e);
+    if (const char* e = std::getenv("SSCC_EXP_COMPRESSION")) s.initial_compression = std::atof(e);
+    if (const char* e = std::getenv("SSCC_EXP_E")) s.response.restitution = std::atof(e);
     motion_source = std::make_unique<SpringScene>(model, mass, s);
   } else {
     EarDropOptions d;
@@ -240,6 +245,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     const ResponseRecord used = motion_source->respond(fast, steps);
     add_response(run.contacts, used, fast, motion_source->configurations(), detector, penetrating_run);
     run.sound.push_back(motion_source->modal_sound());
+    for (const ObjectStep& step : steps) run.largest_norm = std::max(run.largest_norm, model.weighted_norm(step.q1));
     run.object_steps_certified += fast.stats.objects_certified;
     run.object_steps_traversed += fast.stats.objects_traversed;
     run.all_certified_steps += fast.stats.objects_traversed == 0;

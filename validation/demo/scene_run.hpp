@@ -100,6 +100,7 @@ struct SceneRun {
   SettledDisagreements fcl_settled;
   std::vector<std::vector<ObjectStep>> recorded;  ///< with options.record_steps
   ContactTotals contacts;
+  double largest_norm = 0.0;  ///< the largest ||q||_M an object reached at the end of a step
   std::vector<double> sound;  ///< the modal sound at the end of every step (DemoScene::modal_sound)
   double seconds = 0.0;
 
