@@ -16,7 +16,14 @@ ModalDynamics DemoScene::modes_at_rest() const {
 }
 
 ResponseRecord DemoScene::respond(const SceneReport& report, const std::vector<ObjectStep>& steps) {
-  return respond_to_contacts(report, steps, response_bodies(), ground_contacts(), response_);
+  const std::vector<ResponseBody> bodies = response_bodies();
+  double before = 0.0;
+  for (const ResponseBody& b : bodies) before += b.modes->velocity().sum();
+  ResponseRecord record = respond_to_contacts(report, steps, bodies, ground_contacts(), response_);
+  double after = 0.0;
+  for (const ResponseBody& b : bodies) after += b.modes->velocity().sum();
+  contact_acceleration_ = (after - before) / motion_.dt;  // the step's mean contact force, per unit modal mass
+  return record;
 }
 
 std::vector<Eigen::VectorXd> DemoScene::configurations() {
@@ -26,7 +33,7 @@ std::vector<Eigen::VectorXd> DemoScene::configurations() {
 }
 
 double DemoScene::modal_sound() {
-  double pressure = 0.0;
+  double pressure = contact_acceleration_;
   for (const ResponseBody& b : response_bodies()) pressure += b.modes->acceleration().sum();
   return pressure;
 }

@@ -30,7 +30,9 @@ class DemoScene {
   /// Every object's reduced coordinates now (after the response).
   std::vector<Eigen::VectorXd> configurations();
   /// The sound pressure now, up to a constant: the sum of every mode's acceleration over the
-  /// objects (every mode radiating alike: a stand-in for a radiation model).
+  /// objects (every mode radiating alike: a stand-in for a radiation model), the contact
+  /// forces of the last response included (their impulses over the step's length): the
+  /// clicks of the clatter, since the modes themselves may ring below hearing.
   double modal_sound();
   /// The events (impacts, strikes) so far.
   int events() const { return events_; }
@@ -63,6 +65,7 @@ class DemoScene {
   double mass_;
   SceneMotionOptions motion_;
   ContactResponseOptions response_;
+  double contact_acceleration_ = 0.0;  ///< the last response's, summed over the modes (1/s^2)
   Aabb rest_box_;  ///< the rest mesh's bounding box
   std::mt19937_64 rng_;
   double time_ = 0.0;
