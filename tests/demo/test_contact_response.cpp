@@ -22,7 +22,7 @@ TEST_CASE("contact frame: the contact point and normal at the time of impact", "
   for (int trial = 0; trial < 200; ++trial) {
     // A vertex falling through the triangle z = 0 at a known point and time, the triangle at rest.
     const Points triangle_and_vertex_at_rest{Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 0),
-                                            Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(0, 2, 0)};
+                                             Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(0, 2, 0)};
     const double b1 = 0.1 + 0.35 * (uniform(rng) + 1), b2 = 0.1 + 0.3 * (uniform(rng) + 1) * (0.9 - b1);
     const Eigen::Vector3d crossing = b1 * triangle_and_vertex_at_rest[2] + b2 * triangle_and_vertex_at_rest[3];
     const double toi = 0.5 + 0.4 * uniform(rng);

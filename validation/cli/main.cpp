@@ -346,7 +346,7 @@ int run_basis(const std::vector<std::string>& args) {
 /// The scene flags shared by demo and bench.
 const std::set<std::string> kSceneFlags{"--scene",  "--mesh",    "--basis",   "--modes",     "--objects",
                                         "--steps",  "--dt",      "--seed",    "--fcl-steps", "--damping",
-                                        "--youngs", "--poisson", "--density", "--cache",   "--strike-speed"};
+                                        "--youngs", "--poisson", "--density", "--cache",     "--strike-speed"};
 
 void scene_run_options(const Flags& flags, sscc::validation::SceneRunOptions& o) {
   if (flags.has("--scene")) o.scene = flags.text("--scene");

@@ -13,13 +13,13 @@ namespace {
 struct Constraint {
   int bodies = 0;
   std::array<int, 2> body{};
-  std::array<Eigen::VectorXd, 2> modal;      ///< d gap / d q of each body
-  std::array<Eigen::Vector3d, 2> rigid;      ///< d gap / d translation, times the body's mobility
-  double gap = 0.0;                          ///< at the end of the step, before the response
+  std::array<Eigen::VectorXd, 2> modal;  ///< d gap / d q of each body
+  std::array<Eigen::Vector3d, 2> rigid;  ///< d gap / d translation, times the body's mobility
+  double gap = 0.0;                      ///< at the end of the step, before the response
   double target_gap = 0.0;
-  double inverse_mass = 0.0;                 ///< gap change per unit of lambda (or of impulse)
+  double inverse_mass = 0.0;  ///< gap change per unit of lambda (or of impulse)
   double target_velocity = 0.0;
-  double impulse = 0.0;                      ///< accumulated, >= 0
+  double impulse = 0.0;  ///< accumulated, >= 0
 };
 
 /// The four vertices of a feature contact, in contact_frame's order.
@@ -62,9 +62,10 @@ class ConstraintBuilder {
     }
     const ContactFrame frame = contact_frame(kind, start, end, toi);
     // The normal in the world: a self-contact's gap is the same in both frames.
-    const Eigen::Vector3d normal = self ? Eigen::Vector3d(bodies_[object_first].frame->rotation * frame.normal)
-                                        : frame.normal;
-    Constraint c = start_constraint(self ? std::vector<int>{object_first} : std::vector<int>{object_first, object_second});
+    const Eigen::Vector3d normal =
+        self ? Eigen::Vector3d(bodies_[object_first].frame->rotation * frame.normal) : frame.normal;
+    Constraint c =
+        start_constraint(self ? std::vector<int>{object_first} : std::vector<int>{object_first, object_second});
     for (int i = 0; i < 4; ++i) add_point(c, owner[i], vertices[i], frame.weights[i], normal);
     c.gap = contact_gap(frame, end);
     c.target_gap = options_.separation;
@@ -133,8 +134,8 @@ double change(const Constraint& c, const std::vector<Eigen::VectorXd>& dq, const
   return d;
 }
 
-void apply(const Constraint& c, double amount, const std::vector<ResponseBody>& bodies, std::vector<Eigen::VectorXd>& dq,
-           std::vector<Eigen::Vector3d>& dt) {
+void apply(const Constraint& c, double amount, const std::vector<ResponseBody>& bodies,
+           std::vector<Eigen::VectorXd>& dq, std::vector<Eigen::Vector3d>& dt) {
   for (int k = 0; k < c.bodies; ++k) {
     dq[c.body[k]] += amount * c.modal[k];
     dt[c.body[k]] += amount * c.rigid[k] / bodies[c.body[k]].mass;

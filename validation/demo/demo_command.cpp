@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "demo/sound_file.hpp"
 #include "plot.hpp"
@@ -66,8 +66,8 @@ void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Ce
   }
   file.close();
   PlotPanel panel("Certificate radius per tree level, " + demo.run.scene + " scene", "tree level (0: root)",
-                        "certificate radius ||q||_M", LogScale::kY,
-                        {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
+                  "certificate radius ||q||_M", LogScale::kY,
+                  {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
   panel.key = "outside bottom center horizontal";
   render_figure({output_path(demo, "radius_per_level.png"), 700, 500, {panel}}, progress);
 }

@@ -66,7 +66,7 @@ class DemoScene {
   SceneMotionOptions motion_;
   ContactResponseOptions response_;
   double contact_acceleration_ = 0.0;  ///< the last response's, summed over the modes (1/s^2)
-  Aabb rest_box_;  ///< the rest mesh's bounding box
+  Aabb rest_box_;                      ///< the rest mesh's bounding box
   std::mt19937_64 rng_;
   double time_ = 0.0;
   int events_ = 0;

@@ -203,9 +203,9 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     motion_source = std::make_unique<EarDrop>(model, mass, d);
   }
   progress << "scene " << o.scene << ": " << run.objects << " objects x " << run.steps << " steps of " << run.dt
-           << " s, traditional on every " << run.traditional_every << "; "
-           << model.mesh().triangle_count() << " triangles, " << model.mode_count()
-           << " modes; root certificate radius " << run.assets.certificates->node_radius(0) << '\n';
+           << " s, traditional on every " << run.traditional_every << "; " << model.mesh().triangle_count()
+           << " triangles, " << model.mode_count() << " modes; root certificate radius "
+           << run.assets.certificates->node_radius(0) << '\n';
 
   SceneOptions with, without;
   without.use_certificates = false;

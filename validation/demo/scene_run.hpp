@@ -38,8 +38,8 @@ struct SceneRunOptions {
   std::string basis;  ///< a .U file with its .weights beside it; "" : generated and cached
   int modes = 0;      ///< 0: the scene's default
   int objects = 0;    ///< 0: the scene's default
-  int steps = 0;     ///< 0: the scene's default
-  double dt = 0.0;   ///< s; 0: the scene's default
+  int steps = 0;      ///< 0: the scene's default
+  double dt = 0.0;    ///< s; 0: the scene's default
   /// The traditional query runs on every this many steps (the first included); 0: the
   /// scene's default. SSCC runs on every step.
   int traditional_every = 0;
@@ -90,8 +90,8 @@ struct SceneRun {
   int identical_thread_steps = 0;  ///< compared steps whose one-thread reports equal the all-thread ones (both methods)
   MethodTimes discrete_sscc, discrete_traditional;  ///< empty unless options.discrete
   int traditional_every = 1;
-  std::vector<int> compared;                        ///< the steps on which the traditional query ran
-  int identical_steps = 0;                          ///< of those, SSCC and traditional reports identical
+  std::vector<int> compared;  ///< the steps on which the traditional query ran
+  int identical_steps = 0;    ///< of those, SSCC and traditional reports identical
   int identical_discrete_steps = 0;
   int all_certified_steps = 0;  ///< no object needed a traversal
   long object_steps_certified = 0, object_steps_traversed = 0;
