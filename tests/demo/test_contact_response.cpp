@@ -8,6 +8,7 @@
 #include "demo/spring_mesh.hpp"
 #include "sscc/basis/modal_analysis.hpp"
 #include "sscc/scene/scene.hpp"
+#include "support/test_meshes.hpp"
 
 namespace {
 
@@ -125,4 +126,55 @@ TEST_CASE("contact response: a drop and a strike end free of interpenetration, u
   INFO("steps ending interpenetrating: " << penetrating_responded << " with the response, " << penetrating_free
                                          << " without");
   CHECK(penetrating_responded * 10 <= penetrating_free);
+}
+
+TEST_CASE("contact response: a vertex below the ground is pushed out and stops approaching", "[demo][response]") {
+  const sscc::TriangleMesh box = sscc::test::box_surface({1, 0.6, 0.5}, {2, 2, 2});
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Eigen::MatrixXd phi(3 * box.vertex_count(), 4);
+  for (Eigen::Index i = 0; i < phi.size(); ++i) phi.data()[i] = normal(rng);
+  const sscc::SubspaceModel model(box, phi, Eigen::Vector4d(1.0, 2.0, 3.0, 4.0));
+  const int vertex = 5;
+  for (const bool rigid : {false, true}) {
+    sscc::validation::ModalDynamics modes(2.0 * model.weights(), 0.0, 0.01);
+    modes.hold_at(Eigen::Vector4d(0.1, -0.2, 0.05, 0.3));
+    // Modal velocities that move the vertex down: -Phi_v^T z.
+    modes.add_impulse(-phi.middleRows<3>(3 * vertex).transpose() * Eigen::Vector3d::UnitZ());
+    sscc::RigidFrame frame;
+    frame.translation = Eigen::Vector3d(0.3, -0.1, 0.2);
+    Eigen::Vector3d velocity(0.0, 0.0, -2.0);
+    const double mass = 3.0, restitution = 0.5;
+    const auto world = [&](const Eigen::VectorXd& q) {
+      return Eigen::Vector3d(frame.rotation * model.position(vertex, model.scaled_coordinates(q)) + frame.translation);
+    };
+    const auto vertex_velocity = [&] {
+      const Eigen::Vector3d modal = phi.middleRows<3>(3 * vertex) * modes.velocity();
+      return Eigen::Vector3d(modal + (rigid ? velocity : Eigen::Vector3d::Zero()));
+    };
+    const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+    const double ground = world(modes.q()).z() + 0.01;  // the vertex is 1 cm below it
+    const double approach = vertex_velocity().z();
+    REQUIRE(approach < 0);
+    std::vector<sscc::ObjectStep> steps(1);
+    steps[0].q0 = steps[0].q1 = modes.q();
+    steps[0].frame0 = steps[0].frame1 = frame;
+    sscc::SceneReport report;
+    report.objects.resize(1);
+    sscc::validation::ContactResponseOptions options;
+    options.restitution = restitution;
+    const sscc::validation::ResponseRecord used = sscc::validation::respond_to_contacts(
+        report, steps, {{&model, &modes, &frame, rigid ? &velocity : nullptr, Eigen::Vector3d::Ones(), mass}},
+        {{0, vertex, up, ground}}, options);
+    CHECK(used.ground == 1);
+    CHECK(used.deepest_penetration == Approx(0.01));
+    CHECK(used.residual_penetration == Approx(0.0).margin(1e-12));
+    CHECK(world(modes.q()).z() == Approx(ground).margin(1e-12));
+    CHECK(vertex_velocity().z() == Approx(-restitution * approach).margin(1e-12));
+    if (rigid) {
+      // The impulse splits between the frame (1 / m) and the modes (|a|^2), as their inverse masses.
+      CHECK(velocity.x() == 0.0);
+      CHECK(velocity.z() > -2.0);
+    }
+  }
 }
