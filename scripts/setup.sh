@@ -2,7 +2,7 @@
 # Installs the Debian packages sscc builds with, where they are missing (root or sudo).
 set -euo pipefail
 
-packages=(build-essential cmake libeigen3-dev libgmp-dev catch2 libfcl-dev libccd-dev gnuplot-nox libspectra-dev libtet1.5-dev libopenmesh-dev
+packages=(build-essential cmake libeigen3-dev libgmp-dev catch2 libfcl-dev libccd-dev gnuplot-nox libspectra-dev libtet1.5-dev libopenmesh-dev libsndfile1-dev
           python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
           clang libclang-rt-14-dev libomp-dev clang-format)
 missing=()

@@ -144,6 +144,8 @@ SceneRun bench_scene(const std::string& scene, const BenchOptions& o, bool discr
   SceneRunOptions s;
   s.scene = scene;
   s.steps = o.steps;
+  s.dt = 0.01;              // every scene at the same rate, the spring's audio rate aside
+  s.traditional_every = 1;  // and compared on every step
   s.seed = o.seed;
   s.cache_dir = o.cache_dir;
   s.fcl_steps = 0;

@@ -1,11 +1,14 @@
 #include "demo/demo_command.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
+#include "demo/sound_file.hpp"
 #include "plot.hpp"
 #include "precompute_command.hpp"
 
@@ -20,17 +23,27 @@ std::string output_path(const DemoOptions& demo, const std::string& name) {
   return demo.output_dir + "/demo_" + demo.run.scene + "_" + name;
 }
 
-void write_time_plot(const DemoOptions& demo, const std::vector<double>& sscc, const std::vector<double>& traditional,
-                     std::ostream& progress) {
+void write_time_plot(const DemoOptions& demo, const SceneRun& run, std::ostream& progress) {
   const std::string csv = output_path(demo, "time_per_step.csv");
   std::ofstream file(csv);
-  file << "step,sscc_ms,traditional_ms\n";
-  for (std::size_t k = 0; k < sscc.size(); ++k) file << k << ',' << sscc[k] << ',' << traditional[k] << '\n';
+  file << "step,sscc_ms\n";
+  for (std::size_t k = 0; k < run.sscc.ms.size(); ++k) file << k << ',' << run.sscc.ms[k] << '\n';
   file.close();
-  const PlotPanel panel(
-      "Continuous collision detection per step, " + demo.run.scene + " scene", "time step", "CCD time per step (ms)",
-      LogScale::kY,
-      {{csv, 1, "3", "traditional (swept-box BVH)", "lines lw 2"}, {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}});
+  // The traditional query's steps (every step, or a regular sample of them).
+  const std::string traditional_csv = output_path(demo, "traditional_time_per_step.csv");
+  std::ofstream traditional(traditional_csv);
+  traditional << "step,traditional_ms\n";
+  for (std::size_t i = 0; i < run.compared.size(); ++i) {
+    traditional << run.compared[i] << ',' << run.traditional.ms[i] << '\n';
+  }
+  traditional.close();
+  const std::string sampled =
+      run.traditional_every > 1 ? ", every " + std::to_string(run.traditional_every) + "th step" : "";
+  PlotPanel panel("Continuous collision detection per step, " + demo.run.scene + " scene", "time step",
+                  "CCD time per step (ms)", LogScale::kY,
+                  {{traditional_csv, 1, "2", "traditional (swept-box BVH" + sampled + ")", "lines lw 2"},
+                   {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}});
+  panel.key = "outside bottom center horizontal";  // below the axes: never over the curves
   render_figure({output_path(demo, "time_per_step.png"), 900, 500, {panel}}, progress);
 }
 
@@ -52,10 +65,45 @@ void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Ce
     }
   }
   file.close();
-  const PlotPanel panel("Certificate radius per tree level, " + demo.run.scene + " scene", "tree level (0: root)",
-                        "certificate radius ||q||_M", LogScale::kY,
-                        {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
+  PlotPanel panel("Certificate radius per tree level, " + demo.run.scene + " scene", "tree level (0: root)",
+                  "certificate radius ||q||_M", LogScale::kY,
+                  {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
+  panel.key = "outside bottom center horizontal";
   render_figure({output_path(demo, "radius_per_level.png"), 700, 500, {panel}}, progress);
+}
+
+/// Below this step rate (Hz) the steps are too coarse to be heard: no sound file.
+constexpr double kLowestAudioRate = 8000.0;
+
+/// Writes the modal sound at the step rate, when that is an audio rate; returns the file, or
+/// "" when none was written (and why, on progress).
+std::string write_sound(const DemoOptions& demo, const SceneRun& run, std::ostream& progress) {
+  const double rate = 1.0 / run.dt;
+  if (rate < kLowestAudioRate || run.sound.empty()) return "";
+  const std::string path = output_path(demo, "sound.wav");
+  try {
+    write_wav(path, run.sound, static_cast<int>(std::lround(rate)));
+  } catch (const std::runtime_error& e) {
+    progress << "demo: no sound file: " << e.what() << '\n';
+    return "";
+  }
+  progress << "demo: wrote " << path << '\n';
+  return path;
+}
+
+void print_contacts(const SceneRun& run, std::ostream& out) {
+  const ContactTotals& c = run.contacts;
+  char line[768];
+  std::snprintf(line, sizeof line,
+                "contact response: contacts in %d/%d steps (self features %ld, between objects %ld, ground %ld); "
+                "steps whose response used other contacts than SSCC reported: %d\n"
+                "interpenetration after the response (exact discrete test at each step's end): %d/%d steps, "
+                "longest run %d steps, %d intersecting pairs at the end of the run; deepest penetration along a "
+                "contact normal: %.4f mm before the response, %.4f mm after it\n",
+                c.steps_with_contacts, run.steps, c.self_features, c.inter_features, c.ground_contacts,
+                c.response_mismatches, c.penetrating_steps, run.steps, c.longest_penetrating_run,
+                c.final_penetrating_pairs, 1e3 * c.deepest_penetration, 1e3 * c.deepest_residual);
+  out << line;
 }
 
 }  // namespace
@@ -65,7 +113,8 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
   fs::create_directories(demo.output_dir);
   const SceneRun run = run_scene(o, progress);
   const SubspaceModel& model = *run.assets.model;
-  write_time_plot(demo, run.sscc.ms, run.traditional.ms, progress);
+  write_time_plot(demo, run, progress);
+  const std::string sound = write_sound(demo, run, progress);
   write_radius_plot(demo, *run.assets.bvh, *run.assets.certificates, progress);
 
   char line[512];
@@ -93,12 +142,20 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
                   fcl.ms.size(), fcl.mean(), fcl.median(), fcl.max());
     out << line;
   }
+  const int compared = static_cast<int>(run.compared.size());
   std::snprintf(line, sizeof line,
                 "\nspeedup SSCC over traditional: %.1fx (mean time per step); steps with every object certified: "
                 "%d/%d; object-steps certified by the root: %ld/%ld, traversed: %ld\n",
                 run.speedup(), run.all_certified_steps, run.steps, run.object_steps_certified,
                 static_cast<long>(run.objects) * run.steps, run.object_steps_traversed);
   out << line;
+  if (compared < run.steps) {
+    std::snprintf(line, sizeof line,
+                  "the traditional query ran on every %dth step (%d of %d): SSCC's mean over every step against "
+                  "its mean over those; on those steps alone SSCC was %.1fx faster\n",
+                  run.traditional_every, compared, run.steps, run.compared_speedup());
+    out << line;
+  }
   if (run.threads > 1) {
     std::snprintf(line, sizeof line,
                   "threads: %d against 1, speedup (mean time per step): SSCC %.2fx (%.2fx per thread), traditional "
@@ -107,27 +164,33 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
                   run.thread_speedup(run.sscc_one_thread, run.sscc) / run.threads,
                   run.thread_speedup(run.traditional_one_thread, run.traditional),
                   run.thread_speedup(run.traditional_one_thread, run.traditional) / run.threads,
-                  run.identical_thread_steps, run.steps);
+                  run.identical_thread_steps, compared);
     out << line;
   }
-  out << "agreement: SSCC and traditional reports identical on " << run.identical_steps << "/" << run.steps << " steps";
+  out << "agreement: SSCC and traditional reports identical on " << run.identical_steps << "/" << compared
+      << " compared steps";
   if (run.fcl_object_steps > 0) {
     out << "; FCL self-collision identical on " << run.fcl_identical << "/" << run.fcl_object_steps
         << " sampled object-steps, its disagreements settled by the exact kernels: false positives "
         << run.fcl_settled.fcl_false_positives << ", false negatives " << run.fcl_settled.fcl_false_negatives
         << ", unexplained " << run.fcl_settled.unexplained;
   }
-  out << "\nimpacts and strikes: " << run.impacts << "; total time " << run.seconds << " s; plots and CSV in "
-      << demo.output_dir << "\n";
+  out << "\n";
+  print_contacts(run, out);
+  out << "largest deformation ||q||_M at a step's end: " << run.largest_norm << " (root certificate radius "
+      << run.assets.certificates->node_radius(0) << ")\n";
+  out << "impacts and strikes: " << run.impacts << "; total time " << run.seconds << " s; plots and CSV in "
+      << demo.output_dir << (sound.empty() ? "" : "; sound in " + sound) << "\n";
   std::snprintf(line, sizeof line,
                 "demo: scene=%s objects=%d steps=%d colliding_steps=%d sscc_ms=%.3f traditional_ms=%.3f speedup=%.1f "
-                "threads=%d traditional_thread_speedup=%.2f agree=%s",
+                "threads=%d traditional_thread_speedup=%.2f penetrating_steps=%d deepest_penetration_mm=%.4f agree=%s",
                 run.scene.c_str(), run.objects, run.steps, run.sscc.colliding_steps, run.sscc.mean(),
                 run.traditional.mean(), run.speedup(), run.threads,
-                run.thread_speedup(run.traditional_one_thread, run.traditional), run.agree() ? "yes" : "no");
+                run.thread_speedup(run.traditional_one_thread, run.traditional), run.contacts.penetrating_steps,
+                1e3 * run.contacts.deepest_penetration, run.agree() ? "yes" : "no");
   out << line << '\n';
-  const int thread_disagreements = run.sscc_one_thread.ms.empty() ? 0 : run.steps - run.identical_thread_steps;
-  return (run.steps - run.identical_steps) + thread_disagreements + run.fcl_settled.unexplained;
+  const int thread_disagreements = run.sscc_one_thread.ms.empty() ? 0 : compared - run.identical_thread_steps;
+  return (compared - run.identical_steps) + thread_disagreements + run.fcl_settled.unexplained;
 }
 
 }  // namespace sscc::validation

@@ -27,7 +27,7 @@ double enclosed_volume(const TriangleMesh& mesh) {
 }
 
 EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& options)
-    : DemoScene(model, mass, options.motion), options_(options) {
+    : DemoScene(model, mass, options.motion, options.response), options_(options) {
   const TriangleMesh& mesh = model.mesh();
   const Eigen::Vector3d& lo = rest_box_.lo;
   const Eigen::Vector3d& hi = rest_box_.hi;
@@ -42,7 +42,7 @@ EarDrop::EarDrop(const SubspaceModel& model, double mass, const EarDropOptions& 
   const double spacing = pitch(options.spacing);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
-    FallingBody body{{modes_at_rest(), {}, 0.0}, 0.0, false};
+    FallingBody body{{modes_at_rest(), {}, 0.0}, false};
     body.frame.rotation = Eigen::AngleAxisd(2 * M_PI * uniform(rng_), Eigen::Vector3d::UnitY()).toRotationMatrix();
     const double drop = options.drop_height_min + (options.drop_height_max - options.drop_height_min) * uniform(rng_);
     body.frame.translation = Eigen::Vector3d(spacing * (i % side), drop - lowest_, spacing * (i / side));
@@ -58,21 +58,30 @@ std::vector<ObjectStep> EarDrop::step() {
     FallingBody& b = bodies_[i];
     steps[i].q0 = b.modes.q();
     steps[i].frame0 = b.frame;
+    // Sliding (after a contact with another body): free in flight, slowed by friction at rest.
+    Eigen::Vector3d sliding(b.velocity.x(), 0.0, b.velocity.z());
+    if (b.resting) {
+      const double speed = sliding.norm(), slowed = std::max(0.0, speed - options_.friction * options_.gravity * dt);
+      sliding *= speed > 0.0 ? slowed / speed : 0.0;
+      b.velocity.x() = sliding.x();
+      b.velocity.z() = sliding.z();
+    }
+    b.frame.translation += sliding * dt;
     if (!b.resting) {
-      b.vertical_velocity -= options_.gravity * dt;
-      b.frame.translation.y() += b.vertical_velocity * dt;
+      b.velocity.y() -= options_.gravity * dt;
+      b.frame.translation.y() += b.velocity.y() * dt;
       const double bottom = b.frame.translation.y() + lowest_;
-      if (bottom <= 0.0 && b.vertical_velocity < 0.0) {
+      if (bottom <= 0.0 && b.velocity.y() < 0.0) {
         b.frame.translation.y() = -lowest_;
-        const double speed = -b.vertical_velocity;
+        const double speed = -b.velocity.y();
         // The ground's impulse, upward in the body frame (the yaw keeps y up).
         b.modes.add_impulse(
             modal_impulse(model_, bottom_, Eigen::Vector3d(0, mass_ * (1 + options_.restitution) * speed, 0)));
         ++events_;
-        b.vertical_velocity = options_.restitution * speed;
-        if (b.vertical_velocity < kRestSpeed) {
+        b.velocity.y() = options_.restitution * speed;
+        if (b.velocity.y() < kRestSpeed) {
           b.resting = true;
-          b.vertical_velocity = 0.0;
+          b.velocity.y() = 0.0;
           b.next_strike =
               time_ + options_.strike_wait_min + (options_.strike_wait_max - options_.strike_wait_min) * uniform(rng_);
         }
@@ -97,6 +106,15 @@ std::vector<ObjectStep> EarDrop::step() {
   }
   time_ += dt;
   return steps;
+}
+
+std::vector<ResponseBody> EarDrop::response_bodies() {
+  std::vector<ResponseBody> bodies;
+  for (FallingBody& b : bodies_) {
+    const Eigen::Vector3d mobility = b.resting ? Eigen::Vector3d(1, 0, 1) : Eigen::Vector3d::Ones();
+    bodies.push_back({&model_, &b.modes, &b.frame, &b.velocity, mobility, mass_});
+  }
+  return bodies;
 }
 
 }  // namespace sscc::validation

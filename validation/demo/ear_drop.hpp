@@ -4,7 +4,10 @@
 // motion: a vertical fall with gravity and a bounce (restitution e), a fixed yaw per
 // object; the landing impulse m (1 + e) |v| is spread over the lowest vertices, each strike
 // over the vertices near its point, and both excite the modes (Phi^T J). Linear modal
-// dynamics between events (modal_dynamics.hpp). Seeded; deterministic.
+// dynamics between events (modal_dynamics.hpp). Contacts of a body with itself or with
+// another body change its modes and its translation (contact_response.hpp); a body resting
+// on the ground is held vertically, and its sliding is stopped by friction. Seeded;
+// deterministic.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,6 +30,8 @@ struct EarDropOptions {
   double strike_wait_max = 3.0;
   double spacing = 1.3;   ///< grid pitch, in units of the mesh's largest extent
   double gravity = 9.81;  ///< m/s^2
+  double friction = 0.5;  ///< Coulomb coefficient of the ground for a resting body's sliding
+  ContactResponseOptions response;
 };
 
 /// Events: landings and strikes.
@@ -38,9 +43,10 @@ class EarDrop : public DemoScene {
 
  private:
   struct FallingBody : Body {
-    double vertical_velocity = 0.0;
     bool resting = false;
   };
+
+  std::vector<ResponseBody> response_bodies() override;
 
   EarDropOptions options_;
   std::vector<FallingBody> bodies_;

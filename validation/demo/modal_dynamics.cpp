@@ -10,6 +10,8 @@ ModalDynamics::ModalDynamics(const Eigen::VectorXd& omega_squared, double dampin
       qv_(omega_squared.size()),
       vq_(omega_squared.size()),
       vv_(omega_squared.size()),
+      omega_squared_(omega_squared),
+      damping_(omega_squared.size()),
       q_(Eigen::VectorXd::Zero(omega_squared.size())),
       v_(Eigen::VectorXd::Zero(omega_squared.size())) {
   if (!(damping_ratio >= 0.0 && damping_ratio < 1.0) || !(dt > 0.0)) {
@@ -21,6 +23,7 @@ ModalDynamics::ModalDynamics(const Eigen::VectorXd& omega_squared, double dampin
     // w = omega sqrt(1 - zeta^2).
     const double omega = std::sqrt(omega_squared[i]);
     const double a = damping_ratio * omega;
+    damping_[i] = 2.0 * a;
     const double w = omega * std::sqrt(1.0 - damping_ratio * damping_ratio);
     const double decay = std::exp(-a * dt), c = std::cos(w * dt), s = std::sin(w * dt);
     qq_[i] = decay * (c + a / w * s);
@@ -34,6 +37,10 @@ void ModalDynamics::hold_at(const Eigen::VectorXd& q) {
   if (q.size() != q_.size()) throw std::invalid_argument("modal dynamics: q has the wrong size");
   q_ = q;
   v_.setZero();
+}
+
+Eigen::VectorXd ModalDynamics::acceleration() const {
+  return -omega_squared_.cwiseProduct(q_) - damping_.cwiseProduct(v_);
 }
 
 void ModalDynamics::step() {

@@ -33,12 +33,17 @@ class ModalDynamics {
   void hold_at(const Eigen::VectorXd& q);
   /// Adds an impulse in modal coordinates (Phi^T J for nodal impulses J).
   void add_impulse(const Eigen::VectorXd& modal_impulse) { v_ += modal_impulse; }
+  /// Moves the modes by dq at once, keeping their velocities (a contact's position correction).
+  void displace(const Eigen::VectorXd& dq) { q_ += dq; }
+  /// The modes' accelerations under no force, -omega^2 q - 2 zeta omega q'.
+  Eigen::VectorXd acceleration() const;
   /// Advances one step under no force.
   void step();
 
  private:
   // Per mode, the exact 2 x 2 propagator of (q, q') over one step.
   Eigen::VectorXd qq_, qv_, vq_, vv_;
+  Eigen::VectorXd omega_squared_, damping_;  // omega^2 and 2 zeta omega per mode
   Eigen::VectorXd q_, v_;
 };
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -22,6 +21,20 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// Restitution of the spring's coils and ground (steel on steel rebounds; the ears of the
+/// rubber bunnies do not): the fraction of a contact's approach speed returned.
+constexpr double kSteelRestitution = 0.3;
+/// s between strikes of the spring: two or three strikes in its one second.
+constexpr double kSpringStrikeInterval = 0.4;
+/// m/s, the slowest strike of the spring (its mass at this speed, on the top coil). Its coils
+/// did not touch when struck at 3 to 4.5 m/s and did at 7 m/s (||q||_M 475, four times the
+/// root radius), when most steps need most of the traversal; at this speed the clatter is
+/// that of the bottom coil on the ground, and the modes leave the root certificate for a
+/// while after each strike.
+constexpr double kSpringStrikeSpeed = 2.0;
+/// The fastest strike, a multiple of the slowest.
+constexpr double kStrikeSpeedSpread = 1.5;
+
 /// A scene's defaults.
 struct Preset {
   std::string mesh, generated_mesh, basis_kind;
@@ -29,12 +42,23 @@ struct Preset {
   ElasticMaterial material;
   double damping_ratio;
   bool spring_motion;
+  int steps = 300;
+  double dt = 0.01;  ///< s
+  int traditional_every = 1;
 };
+
+/// The audio rate (Hz) of the spring's steps and of its sound.
+constexpr int kAudioRate = 44100;
+/// The audio-rate spring compares with the traditional query on every this many steps: 44,100
+/// traditional queries of 15 ms each would take 11 minutes, a regular sample of them 13 s.
+constexpr int kSpringTraditionalEvery = 50;
 
 Preset preset(const std::string& scene) {
   const ElasticMaterial rubber{2.0e7, 0.4, 1100.0}, steel{2.0e11, 0.3, 7800.0};
   if (scene == "bunnies") return {"", "", "modal", 30, 16, rubber, 0.1, false};
-  if (scene == "spring") return {"", "spring", "modal", 20, 1, steel, 0.02, true};
+  if (scene == "spring") {
+    return {"", "spring", "modal", 20, 1, steel, 0.02, true, kAudioRate, 1.0 / kAudioRate, kSpringTraditionalEvery};
+  }
   if (scene == "dragon") {
     return {
         data_dir() + "/../../shared/data/meshes/ChineseDragon-10kv.off", "", "polynomial", 27, 1, rubber, 0.1, false};
@@ -49,6 +73,37 @@ bool same_reports(const SceneReport& a, const SceneReport& b) {
     if (a.objects[i].report.features != b.objects[i].report.features) return false;
   }
   return true;
+}
+
+/// Whether the response turned exactly the reported contacts into constraints.
+bool used_reported_contacts(const ResponseRecord& used, const SceneReport& report) {
+  if (used.inter != report.features || used.self.size() != report.objects.size()) return false;
+  for (std::size_t i = 0; i < used.self.size(); ++i) {
+    if (used.self[i] != report.objects[i].report.features) return false;
+  }
+  return true;
+}
+
+/// Adds one step's response to the totals, with the exact discrete test of every object at
+/// its configuration after the response; `run_length` counts the penetrating steps in a row.
+/// The test runs after steps with contacts and while an interpenetration lasts: a step that
+/// starts free of interpenetration and has no contact (continuous detection misses none)
+/// ends free of it.
+void add_response(ContactTotals& totals, const ResponseRecord& used, const SceneReport& report,
+                  const std::vector<Eigen::VectorXd>& configurations, const SelfCcd& detector, int& run_length) {
+  totals.steps_with_contacts += used.constraints() > 0;
+  for (const auto& self : used.self) totals.self_features += static_cast<long>(self.size());
+  totals.inter_features += static_cast<long>(used.inter.size());
+  totals.ground_contacts += used.ground;
+  totals.response_mismatches += !used_reported_contacts(used, report);
+  totals.deepest_penetration = std::max(totals.deepest_penetration, used.deepest_penetration);
+  totals.deepest_residual = std::max(totals.deepest_residual, used.residual_penetration);
+  if (used.constraints() == 0 && run_length == 0) return;
+  int pairs = 0;
+  for (const Eigen::VectorXd& q : configurations) pairs += static_cast<int>(detector.query_discrete(q).pairs.size());
+  run_length = pairs > 0 ? run_length + 1 : 0;
+  totals.penetrating_steps += pairs > 0;
+  totals.longest_penetrating_run = std::max(totals.longest_penetrating_run, run_length);
 }
 
 void add_run(MethodTimes& m, const SceneReport& r, double ms) {
@@ -81,25 +136,34 @@ double MethodTimes::median() const { return validation::median(ms); }
 double MethodTimes::max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
 
 double SceneRun::speedup() const { return traditional.mean() / std::max(sscc.mean(), 1e-9); }
+double SceneRun::compared_speedup() const {
+  double sum = 0.0;
+  for (int k : compared) sum += sscc.ms[static_cast<std::size_t>(k)];
+  return compared.empty() ? 0.0 : traditional.mean() / std::max(sum / static_cast<double>(compared.size()), 1e-9);
+}
 double SceneRun::discrete_speedup() const { return discrete_traditional.mean() / std::max(discrete_sscc.mean(), 1e-9); }
 double SceneRun::thread_speedup(const MethodTimes& one_thread, const MethodTimes& all) const {
   return one_thread.ms.empty() ? 0.0 : one_thread.mean() / std::max(all.mean(), 1e-9);
 }
 bool SceneRun::agree() const {
-  return identical_steps == steps && fcl_settled.unexplained == 0 &&
-         (sscc_one_thread.ms.empty() || identical_thread_steps == steps) &&
+  const int compared_steps = static_cast<int>(compared.size());
+  return identical_steps == compared_steps && fcl_settled.unexplained == 0 &&
+         (sscc_one_thread.ms.empty() || identical_thread_steps == compared_steps) &&
          (discrete_sscc.ms.empty() || identical_discrete_steps == steps);
 }
 
 SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
-  if (o.steps < 1) throw std::invalid_argument("--steps must be positive");
-  if (!(o.dt > 0.0)) throw std::invalid_argument("--dt must be positive");
+  if (o.steps < 0) throw std::invalid_argument("--steps must be positive");
+  if (!(o.dt >= 0.0)) throw std::invalid_argument("--dt must be positive");
+  if (o.traditional_every < 0) throw std::invalid_argument("the traditional query's interval must be positive");
+  if (o.strike_speed && !(*o.strike_speed > 0.0)) throw std::invalid_argument("--strike-speed must be positive");
   const Preset p = preset(o.scene);
   const auto start = std::chrono::steady_clock::now();
   SceneRun run;
   run.scene = o.scene;
-  run.steps = o.steps;
-  run.dt = o.dt;
+  run.steps = o.steps > 0 ? o.steps : p.steps;
+  run.dt = o.dt > 0.0 ? o.dt : p.dt;
+  run.traditional_every = o.traditional_every > 0 ? o.traditional_every : p.traditional_every;
   const ElasticMaterial material{o.youngs_modulus.value_or(p.material.youngs_modulus),
                                  o.poisson_ratio.value_or(p.material.poisson_ratio),
                                  o.density.value_or(p.material.density)};
@@ -122,20 +186,27 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   const double mass = material.density * enclosed_volume(model.mesh());
   const double damping = o.damping_ratio.value_or(p.damping_ratio);
   std::unique_ptr<DemoScene> motion_source;
-  const SceneMotionOptions motion{run.objects, o.dt, damping, o.seed};
+  const SceneMotionOptions motion{run.objects, run.dt, damping, o.seed};
   if (p.spring_motion) {
     SpringSceneOptions s;
     s.motion = motion;
+    s.response.restitution = kSteelRestitution;
+    // The audio-rate clatter: at rest on the ground, struck every kSpringStrikeInterval.
+    s.initial_compression = 0.0;
+    s.strike_interval = kSpringStrikeInterval;
+    s.strike_speed_min = o.strike_speed.value_or(kSpringStrikeSpeed);
+    s.strike_speed_max = kStrikeSpeedSpread * s.strike_speed_min;
     motion_source = std::make_unique<SpringScene>(model, mass, s);
   } else {
     EarDropOptions d;
     d.motion = motion;
+    if (o.strike_speed) d.strike_speed = *o.strike_speed;
     motion_source = std::make_unique<EarDrop>(model, mass, d);
   }
-  const std::function<std::vector<ObjectStep>()> next = [&] { return motion_source->step(); };
-  progress << "scene " << o.scene << ": " << run.objects << " objects x " << o.steps << " steps of " << o.dt << " s; "
-           << model.mesh().triangle_count() << " triangles, " << model.mode_count()
-           << " modes; root certificate radius " << run.assets.certificates->node_radius(0) << '\n';
+  progress << "scene " << o.scene << ": " << run.objects << " objects x " << run.steps << " steps of " << run.dt
+           << " s, traditional on every " << run.traditional_every << "; " << model.mesh().triangle_count()
+           << " triangles, " << model.mode_count() << " modes; root certificate radius "
+           << run.assets.certificates->node_radius(0) << '\n';
 
   SceneOptions with, without;
   without.use_certificates = false;
@@ -147,10 +218,12 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   discrete_without.use_certificates = false;
   std::vector<std::vector<ObjectStep>> sampled;  // the steps FCL sees
   std::vector<SceneReport> sampled_reports;
-  const int fcl_every = o.fcl_steps > 0 ? std::max(1, o.steps / o.fcl_steps) : 0;
+  const int fcl_every = o.fcl_steps > 0 ? std::max(1, run.steps / o.fcl_steps) : 0;
+  const int progress_every = std::max(50, run.steps / 20);
   std::vector<SelfCcdReport> discrete_a, discrete_b;
-  for (int k = 0; k < o.steps; ++k) {
-    const std::vector<ObjectStep> steps = next();
+  int penetrating_run = 0;
+  for (int k = 0; k < run.steps; ++k) {
+    const std::vector<ObjectStep> steps = motion_source->step();
     if (k == 0) {
       // Continuous collision detection assumes a start free of contact: checked exactly.
       for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -164,19 +237,27 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     auto t = std::chrono::steady_clock::now();
     const SceneReport fast = scene.step(steps, with);
     add_run(run.sscc, fast, milliseconds_since(t));
-    t = std::chrono::steady_clock::now();
-    const SceneReport slow = scene.step(steps, without);
-    add_run(run.traditional, slow, milliseconds_since(t));
-    run.identical_steps += same_reports(fast, slow);
-    if (run.threads > 1) {  // the same step on one thread, side by side
+    if (k % run.traditional_every == 0) {
+      run.compared.push_back(k);
       t = std::chrono::steady_clock::now();
-      const SceneReport fast_one = scene.step(steps, with_one_thread);
-      add_run(run.sscc_one_thread, fast_one, milliseconds_since(t));
-      t = std::chrono::steady_clock::now();
-      const SceneReport slow_one = scene.step(steps, without_one_thread);
-      add_run(run.traditional_one_thread, slow_one, milliseconds_since(t));
-      run.identical_thread_steps += same_reports(fast_one, fast) && same_reports(slow_one, slow);
+      const SceneReport slow = scene.step(steps, without);
+      add_run(run.traditional, slow, milliseconds_since(t));
+      run.identical_steps += same_reports(fast, slow);
+      if (run.threads > 1) {  // the same step on one thread, side by side
+        t = std::chrono::steady_clock::now();
+        const SceneReport fast_one = scene.step(steps, with_one_thread);
+        add_run(run.sscc_one_thread, fast_one, milliseconds_since(t));
+        t = std::chrono::steady_clock::now();
+        const SceneReport slow_one = scene.step(steps, without_one_thread);
+        add_run(run.traditional_one_thread, slow_one, milliseconds_since(t));
+        run.identical_thread_steps += same_reports(fast_one, fast) && same_reports(slow_one, slow);
+      }
     }
+    // The response to what SSCC found (identical to the traditional report where compared).
+    const ResponseRecord used = motion_source->respond(fast, steps);
+    add_response(run.contacts, used, fast, motion_source->configurations(), detector, penetrating_run);
+    run.sound.push_back(motion_source->modal_sound());
+    for (const ObjectStep& step : steps) run.largest_norm = std::max(run.largest_norm, model.weighted_norm(step.q1));
     run.object_steps_certified += fast.stats.objects_certified;
     run.object_steps_traversed += fast.stats.objects_traversed;
     run.all_certified_steps += fast.stats.objects_traversed == 0;
@@ -192,13 +273,17 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
       sampled.push_back(steps);
       sampled_reports.push_back(fast);
     }
-    if ((k + 1) % 50 == 0 || k + 1 == o.steps) {
-      progress << "scene " << o.scene << ": step " << (k + 1) << "/" << o.steps << ", SSCC " << run.sscc.mean()
-               << " ms, traditional " << run.traditional.mean() << " ms per step so far\n"
+    if ((k + 1) % progress_every == 0 || k + 1 == run.steps) {
+      progress << "scene " << o.scene << ": step " << (k + 1) << "/" << run.steps << ", SSCC " << run.sscc.mean()
+               << " ms, traditional " << run.traditional.mean() << " ms per step so far; contacts in "
+               << run.contacts.steps_with_contacts << " steps\n"
                << std::flush;
     }
   }
   run.impacts = motion_source->events();
+  for (const Eigen::VectorXd& q : motion_source->configurations()) {
+    run.contacts.final_penetrating_pairs += static_cast<int>(detector.query_discrete(q).pairs.size());
+  }
 
   if (!sampled.empty()) {
     FclSelfCcd fcl(model.mesh());

@@ -30,17 +30,16 @@ Eigen::VectorXd compression(const SubspaceModel& model, const std::vector<int>& 
 }  // namespace
 
 SpringScene::SpringScene(const SubspaceModel& model, double mass, const SpringSceneOptions& options)
-    : DemoScene(model, mass, options.motion), options_(options) {
+    : DemoScene(model, mass, options.motion, options.response), options_(options) {
   const TriangleMesh& mesh = model.mesh();
   const Eigen::Vector3d& lo = rest_box_.lo;
   const Eigen::Vector3d& hi = rest_box_.hi;
   const double height = hi.z() - lo.z();
-  std::vector<int> bottom;
   for (int v = 0; v < mesh.vertex_count(); ++v) {
     if (mesh.vertices()[v].z() >= hi.z() - kEndBand * height) top_.push_back(v);
-    if (mesh.vertices()[v].z() <= lo.z() + kEndBand * height) bottom.push_back(v);
+    if (mesh.vertices()[v].z() <= lo.z() + kEndBand * height) bottom_.push_back(v);
   }
-  const Eigen::VectorXd held = compression(model, top_, bottom, options.initial_compression * height);
+  const Eigen::VectorXd held = compression(model, top_, bottom_, options.initial_compression * height);
   const double spacing = pitch(options.spacing);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < options.motion.objects; ++i) {
@@ -73,6 +72,27 @@ std::vector<ObjectStep> SpringScene::step() {
   }
   time_ += options_.motion.dt;
   return steps;
+}
+
+std::vector<ResponseBody> SpringScene::response_bodies() {
+  std::vector<ResponseBody> bodies;
+  for (Body& s : springs_) bodies.push_back({&model_, &s.modes, &s.frame, nullptr, Eigen::Vector3d::Zero(), mass_});
+  return bodies;
+}
+
+std::vector<PlaneContact> SpringScene::ground_contacts() {
+  std::vector<PlaneContact> contacts;
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  const double ground = rest_box_.lo.z();
+  for (std::size_t i = 0; i < springs_.size(); ++i) {
+    const Body& s = springs_[i];
+    const Eigen::VectorXd q_hat = model_.scaled_coordinates(s.modes.q());
+    for (int v : bottom_) {
+      const Eigen::Vector3d x = s.frame.rotation * model_.position(v, q_hat) + s.frame.translation;
+      if (up.dot(x) < ground) contacts.push_back({static_cast<int>(i), v, up, ground});
+    }
+  }
+  return contacts;
 }
 
 }  // namespace sscc::validation
