@@ -25,8 +25,8 @@
 // 2 pi strictly monotonically meets every direction from pi(c) once: its vertices are
 // distinct, and the projected boundary is a simple closed polygon.
 //
-// PROOF. Fix t; project along d (pi). By (i) each projected triangle covers its interior once, positively; for a point p not on a projected
-// edge, the number of triangles whose projection contains p is the sum of their boundaries'
+// PROOF. Fix t; project along d (pi). By (i) each projected triangle covers its interior once, positively; for a point
+// p not on a projected edge, the number of triangles whose projection contains p is the sum of their boundaries'
 // winding numbers about p, which is the winding number of pi(dS) about p (winding numbers are
 // additive over chains and twins cancel): a simple closed polygon winds 0 or +-1 about a
 // point off it and the count is not negative, so it is 0 or 1: projected interiors are disjoint,
@@ -162,7 +162,7 @@ class PatchCull {
   const std::vector<Eigen::Vector3d>& x1_;
   EnsureTriangle ensure_triangle_;
   LazyBoxes<NodeCone> cones_;
-  LazyBoxes<char> self_verdicts_;  // cannot_self_touch's answers, once per node
+  LazyBoxes<char> self_verdicts_;          // cannot_self_touch's answers, once per node
   std::vector<DirectedEdge> union_chain_;  // scratch of cannot_touch
 };
 

@@ -128,9 +128,7 @@ class StepContext {
   /// The normal-cone cull (patch_cull.hpp) of a node, and of the union of two nodes, tried
   /// on nodes of at most `largest` triangles.
   bool node_cannot_self_touch(int n, int largest) { return patch_cull_ && patch_cull_->cannot_self_touch(n, largest); }
-  bool nodes_cannot_touch(int a, int b, int largest) {
-    return patch_cull_ && patch_cull_->cannot_touch(a, b, largest);
-  }
+  bool nodes_cannot_touch(int a, int b, int largest) { return patch_cull_ && patch_cull_->cannot_touch(a, b, largest); }
 
   /// The parallel layer: the next task this context runs (its hits are taken with
   /// take_hits before the next one); `cancel`, in the modes that stop at a hit, tells when
@@ -383,9 +381,8 @@ class Traversal {
   /// The largest node tried for a cone where the certificate radius is `radius`
   /// (patch_cull.hpp: small nodes only while certificates may still cull below).
   int largest_cone_node(double radius) const {
-    return certificates_ && !(s_ > kFarPastCertificateRatio * radius)
-               ? detail::kLargestConeNodeWithCertificates
-               : std::numeric_limits<int>::max();
+    return certificates_ && !(s_ > kFarPastCertificateRatio * radius) ? detail::kLargestConeNodeWithCertificates
+                                                                      : std::numeric_limits<int>::max();
   }
 
   const SubspaceBvh& bvh_;
