@@ -10,6 +10,8 @@
 // x = p + U_hat q_hat (the leaf kernels are exact; the node bounds are conservative, with a
 // margin for the rounding of those positions), so nothing is missed and nothing is
 // invented. Every feature pair is tested once per query, whichever triangle pairs share it.
+// Pairs the model excludes (SubspaceModel::excluding, excluded_pairs.hpp) are treated as
+// adjacent ones: never reported, and their features tested only through the pairs considered.
 //
 // With certificates (SSCC paper, Algorithm 1 made continuous): s = max(||q0||_M, ||q1||_M)
 // is computed once per step; intra(n) returns when s < R_n and inter(a, b) of siblings when
