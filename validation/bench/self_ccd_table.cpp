@@ -35,7 +35,7 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
     SelfCcdOptions traditional, cones;
     traditional.use_certificates = cones.use_certificates = false;
     cones.use_normal_cones = true;
-    FclSelfCcd fcl(model.mesh());
+    FclSelfCcd fcl(model.mesh(), model.excluded_pairs());
     for (double amplitude : o.amplitudes) {
       progress << "self-CCD table: " << mesh << " amplitude " << amplitude << '\n';
       const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, amplitude, o.seed);

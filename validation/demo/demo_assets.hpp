@@ -24,7 +24,9 @@ struct DemoAssetOptions {
   int modes = 30;
   ElasticMaterial material;
   std::string cache_dir;
-  bool fresh_certificates = false;  ///< precompute even when the cached file is valid
+  bool fresh_certificates = false;     ///< precompute even when the cached file is valid
+  std::string scale;                   ///< "auto", a factor, or "" (as read) for the rest positions
+  bool exclude_rest_contacts = false;  ///< ignore the pairs touching at rest (excluded_pairs.hpp)
 };
 
 struct DemoAssets {

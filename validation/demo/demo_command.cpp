@@ -15,28 +15,31 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The path of the demo's output file `name` (demo_<scene>_<name>).
-std::string output_path(const DemoOptions& demo, const std::string& name) {
-  return demo.output_dir + "/demo_" + demo.run.scene + "_" + name;
+/// The path of the demo's output file `name` (demo_<scene>_<name>; the scene as run, named
+/// after its mesh when one was given).
+std::string output_path(const DemoOptions& demo, const SceneRun& run, const std::string& name) {
+  return demo.output_dir + "/demo_" + run.scene + "_" + name;
 }
 
-void write_time_plot(const DemoOptions& demo, const std::vector<double>& sscc, const std::vector<double>& traditional,
-                     std::ostream& progress) {
-  const std::string csv = output_path(demo, "time_per_step.csv");
+void write_time_plot(const DemoOptions& demo, const SceneRun& run, std::ostream& progress) {
+  const std::vector<double>& sscc = run.sscc.ms;
+  const std::vector<double>& traditional = run.traditional.ms;
+  const std::string csv = output_path(demo, run, "time_per_step.csv");
   std::ofstream file(csv);
   file << "step,sscc_ms,traditional_ms\n";
   for (std::size_t k = 0; k < sscc.size(); ++k) file << k << ',' << sscc[k] << ',' << traditional[k] << '\n';
   file.close();
   const PlotPanel panel(
-      "Continuous collision detection per step, " + demo.run.scene + " scene", "time step", "CCD time per step (ms)",
+      "Continuous collision detection per step, " + run.scene + " scene", "time step", "CCD time per step (ms)",
       LogScale::kY,
       {{csv, 1, "3", "traditional (swept-box BVH)", "lines lw 2"}, {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}});
-  render_figure({output_path(demo, "time_per_step.png"), 900, 500, {panel}}, progress);
+  render_figure({output_path(demo, run, "time_per_step.png"), 900, 500, {panel}}, progress);
 }
 
-void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Certificates& certificates,
-                       std::ostream& progress) {
-  const std::string csv = output_path(demo, "radius_per_level.csv");
+void write_radius_plot(const DemoOptions& demo, const SceneRun& run, std::ostream& progress) {
+  const SubspaceBvh& bvh = *run.assets.bvh;
+  const Certificates& certificates = *run.assets.certificates;
+  const std::string csv = output_path(demo, run, "radius_per_level.csv");
   std::ostringstream levels;
   print_radius_per_level(bvh, certificates, levels);
   std::ofstream file(csv);
@@ -52,10 +55,10 @@ void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Ce
     }
   }
   file.close();
-  const PlotPanel panel("Certificate radius per tree level, " + demo.run.scene + " scene", "tree level (0: root)",
+  const PlotPanel panel("Certificate radius per tree level, " + run.scene + " scene", "tree level (0: root)",
                         "certificate radius ||q||_M", LogScale::kY,
                         {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
-  render_figure({output_path(demo, "radius_per_level.png"), 700, 500, {panel}}, progress);
+  render_figure({output_path(demo, run, "radius_per_level.png"), 700, 500, {panel}}, progress);
 }
 
 }  // namespace
@@ -65,8 +68,8 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
   fs::create_directories(demo.output_dir);
   const SceneRun run = run_scene(o, progress);
   const SubspaceModel& model = *run.assets.model;
-  write_time_plot(demo, run.sscc.ms, run.traditional.ms, progress);
-  write_radius_plot(demo, *run.assets.bvh, *run.assets.certificates, progress);
+  write_time_plot(demo, run, progress);
+  write_radius_plot(demo, run, progress);
 
   char line[512];
   out << "\nscene " << run.scene << ": " << run.objects << " objects, " << run.steps << " steps of " << run.dt << " s, "

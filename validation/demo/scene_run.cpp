@@ -112,7 +112,10 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   asset_options.material = material;
   asset_options.cache_dir = o.cache_dir;
   asset_options.fresh_certificates = o.fresh_certificates;
+  asset_options.scale = o.scale;
+  asset_options.exclude_rest_contacts = o.exclude_rest_contacts;
   run.assets = load_demo_assets(asset_options, progress);
+  if (!o.mesh.empty()) run.scene = run.assets.name;  // a custom mesh's scene is not "bunnies"
   const SubspaceModel& model = *run.assets.model;
   const SelfCcd detector(*run.assets.bvh, *run.assets.certificates);
 
@@ -133,7 +136,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     motion_source = std::make_unique<EarDrop>(model, mass, d);
   }
   const std::function<std::vector<ObjectStep>()> next = [&] { return motion_source->step(); };
-  progress << "scene " << o.scene << ": " << run.objects << " objects x " << o.steps << " steps of " << o.dt << " s; "
+  progress << "scene " << run.scene << ": " << run.objects << " objects x " << o.steps << " steps of " << o.dt << " s; "
            << model.mesh().triangle_count() << " triangles, " << model.mode_count()
            << " modes; root certificate radius " << run.assets.certificates->node_radius(0) << '\n';
 
@@ -156,8 +159,9 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
       for (std::size_t i = 0; i < steps.size(); ++i) {
         if (detector.query_discrete(steps[i].q0, discrete_without).collided()) {
           throw std::runtime_error(
-              "scene " + o.scene + ": object " + std::to_string(i) +
-              " starts in contact with itself; the continuous queries assume a contact-free start");
+              "scene " + run.scene + ": object " + std::to_string(i) +
+              " starts in contact with itself; the continuous queries assume a contact-free start (if it touches "
+              "itself at rest, --exclude-rest-contacts ignores those pairs)");
         }
       }
     }
@@ -201,7 +205,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   run.impacts = motion_source->events();
 
   if (!sampled.empty()) {
-    FclSelfCcd fcl(model.mesh());
+    FclSelfCcd fcl(model.mesh(), model.excluded_pairs());
     for (std::size_t s = 0; s < sampled.size(); ++s) {
       double step_ms = 0.0;
       for (int i = 0; i < run.objects; ++i) {
