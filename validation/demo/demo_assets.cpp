@@ -26,6 +26,11 @@ namespace fs = std::filesystem;
 
 std::string data_dir() { return SSCC_DATA_DIR; }
 
+double default_bunny_diagonal() {
+  static const double diagonal = read_mesh(data_dir() + "/bunny15k.off").bounding_box_diagonal();
+  return diagonal;
+}
+
 namespace {
 
 /// Identifies the mesh and the modal parameters a cached basis was made from.
@@ -67,13 +72,14 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
   progress << "demo: mesh " << assets.name << ": " << mesh.vertex_count() << " vertices, " << mesh.triangle_count()
            << " triangles\n";
   if (!o.scale.empty()) {
-    const double factor = scale_factor(o.scale, mesh);
+    const double factor = scale_factor(o.scale, mesh, default_bunny_diagonal());
     mesh = scaled(mesh, factor);
     progress << "demo: mesh scaled by " << factor << " (--scale " << o.scale << "): " << mesh.bounding_box_diagonal()
              << " m across\n";
   }
   if (!o.mesh.empty()) {
-    if (const std::string warning = size_warning(mesh); !warning.empty()) progress << "demo: " << warning << '\n';
+    if (const std::string warning = size_warning(mesh, default_bunny_diagonal()); !warning.empty())
+      progress << "demo: " << warning << '\n';
   }
   Eigen::MatrixXd basis;
   Eigen::VectorXd weights;

@@ -43,4 +43,8 @@ DemoAssets load_demo_assets(const DemoAssetOptions& options, std::ostream& progr
 /// The repository's data directory (the shipped demo mesh).
 std::string data_dir();
 
+/// The bounding-box diagonal of the default bunny (data/bunny15k.off), in metres: the size
+/// the scenes' materials and impulses are made for (mesh_units.hpp).
+double default_bunny_diagonal();
+
 }  // namespace sscc::validation

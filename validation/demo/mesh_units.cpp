@@ -4,21 +4,13 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "demo/demo_assets.hpp"
-#include "sscc/mesh/mesh_io.hpp"
-
 namespace sscc::validation {
 
-double default_bunny_diagonal() {
-  static const double diagonal = read_mesh(data_dir() + "/bunny15k.off").bounding_box_diagonal();
-  return diagonal;
-}
-
-double scale_factor(const std::string& option, const TriangleMesh& mesh) {
+double scale_factor(const std::string& option, const TriangleMesh& mesh, double reference_diagonal) {
   if (option == "auto") {
     const double diagonal = mesh.bounding_box_diagonal();
     if (!(diagonal > 0.0)) throw std::invalid_argument("--scale auto: the mesh has no extent");
-    return default_bunny_diagonal() / diagonal;
+    return reference_diagonal / diagonal;
   }
   std::size_t used = 0;
   double factor = 0.0;
@@ -39,8 +31,8 @@ TriangleMesh scaled(const TriangleMesh& mesh, double factor) {
   return TriangleMesh(std::move(vertices), mesh.triangles());
 }
 
-std::string size_warning(const TriangleMesh& mesh) {
-  const double ratio = mesh.bounding_box_diagonal() / default_bunny_diagonal();
+std::string size_warning(const TriangleMesh& mesh, double reference_diagonal) {
+  const double ratio = mesh.bounding_box_diagonal() / reference_diagonal;
   if (ratio <= kSizeWarningFactor && ratio >= 1.0 / kSizeWarningFactor) return "";
   std::ostringstream text;
   text << "warning: the mesh is " << mesh.bounding_box_diagonal() << " m across (bounding-box diagonal), " << ratio

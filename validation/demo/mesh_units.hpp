@@ -18,18 +18,15 @@ namespace sscc::validation {
 /// modes' frequencies move by 10), so the run stops looking like the scene it is named for.
 inline constexpr double kSizeWarningFactor = 10.0;
 
-/// The bounding-box diagonal of data/bunny15k.off, in metres (read from the file).
-double default_bunny_diagonal();
-
-/// The factor --scale asks for: "auto" (the bunny's diagonal over the mesh's) or a positive
-/// number. Throws std::invalid_argument for anything else.
-double scale_factor(const std::string& option, const TriangleMesh& mesh);
+/// The factor --scale asks for: "auto" (reference_diagonal over the mesh's bounding-box
+/// diagonal) or a positive number. Throws std::invalid_argument for anything else.
+double scale_factor(const std::string& option, const TriangleMesh& mesh, double reference_diagonal);
 
 /// The mesh with its rest positions multiplied by `factor` (about the origin).
 TriangleMesh scaled(const TriangleMesh& mesh, double factor);
 
-/// A warning (one line) when the mesh's diagonal is more than kSizeWarningFactor times the
-/// bunny's, or less than its 1 / kSizeWarningFactor; "" otherwise.
-std::string size_warning(const TriangleMesh& mesh);
+/// A warning (one line) when the mesh's diagonal is more than kSizeWarningFactor times
+/// reference_diagonal (the bunny's), or less than its 1 / kSizeWarningFactor; "" otherwise.
+std::string size_warning(const TriangleMesh& mesh, double reference_diagonal);
 
 }  // namespace sscc::validation
