@@ -19,7 +19,8 @@ double scale_factor(const std::string& option, const TriangleMesh& mesh, double 
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != option.size() || !(factor > 0.0) || !std::isfinite(factor)) {
+  // isfinite before any ordered comparison: comparing a NaN raises the invalid-operation flag.
+  if (used == 0 || used != option.size() || !std::isfinite(factor) || factor <= 0.0) {
     throw std::invalid_argument("--scale expects auto or a positive number, got '" + option + "'");
   }
   return factor;
