@@ -197,7 +197,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
       sampled_reports.push_back(fast);
     }
     if ((k + 1) % 50 == 0 || k + 1 == o.steps) {
-      progress << "scene " << o.scene << ": step " << (k + 1) << "/" << o.steps << ", SSCC " << run.sscc.mean()
+      progress << "scene " << run.scene << ": step " << (k + 1) << "/" << o.steps << ", SSCC " << run.sscc.mean()
                << " ms, traditional " << run.traditional.mean() << " ms per step so far\n"
                << std::flush;
     }
@@ -224,8 +224,8 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
         }
       }
       run.fcl_ms.push_back(step_ms);
-      progress << "scene " << o.scene << ": FCL on sampled step " << (s + 1) << "/" << sampled.size() << ": " << step_ms
-               << " ms\n";
+      progress << "scene " << run.scene << ": FCL on sampled step " << (s + 1) << "/" << sampled.size() << ": "
+               << step_ms << " ms\n";
     }
   }
   run.seconds = milliseconds_since(start) / 1e3;
