@@ -124,7 +124,9 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
   assets.model = std::make_unique<SubspaceModel>(
       with_rest_contacts_excluded(SubspaceModel(std::move(mesh), basis, weights), o.exclude_rest_contacts, progress));
   assets.bvh = std::make_unique<SubspaceBvh>(*assets.model);
-  const std::string certificate_path = stem + ".sscc";  // the file checks itself against the model too
+  // The file checks itself against the model too; models with and without the rest contacts
+  // excluded keep a file each.
+  const std::string certificate_path = stem + (o.exclude_rest_contacts ? "-excluding-rest-contacts" : "") + ".sscc";
   std::string why = "a fresh precomputation was asked for";
   if (!o.fresh_certificates) {
     try {

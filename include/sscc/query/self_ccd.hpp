@@ -167,7 +167,8 @@ class SelfCcd {
 
   /// The traditional query on explicit vertex positions at both ends of the step (each
   /// vertex moving linearly): for poses the subspace does not hold, where certificates do
-  /// not apply. Refitted boxes, the same traversal and kernels. Throws
+  /// not apply. Simulators without a subspace use PositionCcd (position_ccd.hpp), built from
+  /// the mesh alone. Refitted boxes, the same traversal and kernels. Throws
   /// std::invalid_argument for a wrong count or a NaN/infinity.
   SelfCcdReport query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
                                 const SelfCcdOptions& options = {}) const;
