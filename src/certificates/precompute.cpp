@@ -80,8 +80,9 @@ class Precomputation {
     }
   }
 
-  /// Folds the considered pairs (neither adjacent nor excluded) among `pairs` into the running minimum, in order of
-  /// their 1D bound; pairs whose bound reaches the minimum's lower bound cannot lower it.
+  /// Folds the considered pairs (neither adjacent nor excluded) among `pairs` into the
+  /// running minimum, in order of their 1D bound; pairs whose bound reaches the minimum's
+  /// lower bound cannot lower it.
   void add_triangle_pairs(const std::vector<std::pair<int, int>>& pairs, RunningMinimum& minimum,
                           Counters& counters) const {
     std::vector<std::pair<double, std::pair<int, int>>> ordered;

@@ -135,8 +135,9 @@ class StepContext {
 
   /// Kernels on the features of a considered triangle pair (neither adjacent nor excluded)
   /// whose swept boxes meet. Each feature pair is tested in one triangle pair only, its
-  /// owner: the smallest considered pair of triangles containing it. Whenever the feature's boxes overlap,
-  /// every triangle and node box containing them overlaps too, so the owner is visited.
+  /// owner: the smallest considered pair of triangles containing it. Whenever the feature's
+  /// boxes overlap, every triangle and node box containing them overlaps too, so the owner
+  /// is visited.
   /// The triangles at positions i and j of the BVH's order.
   void test_triangle_pair(int i, int j) {
     if (stopped()) return;
@@ -214,8 +215,9 @@ class StepContext {
     ++stats_.vertices_computed;
   }
 
-  /// Neither adjacent nor excluded (excluded_pairs.hpp): the pairs a query considers.
-  bool considers(int a, int b) const { return bvh_.model().considers(a, b); }
+  /// Neither adjacent nor excluded (excluded_pairs.hpp): the pairs a query considers. The
+  /// exclusion lookup only for non-adjacent pairs, and an empty set answers at once.
+  bool considers(int a, int b) const { return !mesh_.adjacent(a, b) && !bvh_.model().excluded_pairs().contains(a, b); }
 
   Aabb point_box(int v) const { return {x0_[v].cwiseMin(x1_[v]), x0_[v].cwiseMax(x1_[v])}; }
 

@@ -10,6 +10,7 @@
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/query/self_ccd.hpp"
+#include "sscc/scene/scene.hpp"
 #include "support/test_meshes.hpp"
 
 namespace {
@@ -107,6 +108,29 @@ TEST_CASE("excluded pairs: certificates and queries equal exhaustive testing wit
   }
   CHECK(colliding >= 3);
   CHECK(certified >= 2);
+}
+
+TEST_CASE("excluded pairs: a scene's self tests honour the set as the detector does", "[query][scene]") {
+  const TouchingModel m;
+  sscc::Scene scene;
+  for (int i = 0; i < 2; ++i) scene.add_object(m.ccd, {true, false});
+  std::mt19937_64 rng(11);
+  int colliding = 0;
+  for (double amplitude : {0.05, 0.3, 0.5}) {
+    std::vector<sscc::ObjectStep> steps(2);
+    for (sscc::ObjectStep& step : steps) {
+      step.q0 = random_q(rng, amplitude);
+      step.q1 = step.q0 + random_q(rng, amplitude);
+    }
+    const sscc::SceneReport report = scene.step(steps);
+    for (int i = 0; i < 2; ++i) {
+      const sscc::SelfCcdReport all = m.ccd.query_exhaustive(steps[i].q0, steps[i].q1);
+      CHECK(report.objects[i].report.pairs == all.pairs);
+      CHECK(report.objects[i].report.features == all.features);
+      colliding += all.collided();
+    }
+  }
+  CHECK(colliding >= 2);
 }
 
 TEST_CASE("excluded pairs: a certificate file records the set, and a model without it refuses the file",
