@@ -147,8 +147,8 @@ Certificates Certificates::read(const std::string& path, const SubspaceBvh& bvh)
   Certificates certificates(bvh, parameters);
   if (certificates.key_ != key) {
     r.fail(
-        "stale: computed for another mesh, basis, weights, hierarchy or set of excluded pairs (key mismatch; a "
-        "model excluding its rest contacts and one that does not have different keys)");
+        "stale: computed for another mesh, basis, weights or hierarchy, or another set of excluded pairs "
+        "(key mismatch; a model excluding its rest contacts and one that does not have different keys)");
   }
   const auto valid = [](double x) { return x >= 0.0; };  // NaN fails; infinity means never
   certificates.global_radius_ = r.get<double>("global radius");

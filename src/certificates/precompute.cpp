@@ -309,7 +309,8 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
 void Certificates::check_belongs_to(const SubspaceBvh& bvh) const {
   if (static_cast<int>(bvh.nodes().size()) != node_count() || key_of(bvh, parameters_) != key_) {
     throw std::invalid_argument(
-        "certificates: computed for another mesh, basis, weights, hierarchy or set of excluded pairs (key mismatch)");
+        "certificates: computed for another mesh, basis, weights or hierarchy, or another set of excluded pairs (key "
+        "mismatch)");
   }
 }
 
