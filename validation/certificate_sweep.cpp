@@ -87,7 +87,6 @@ long run_certificate_sweep(const CertificateSweepOptions& o, std::ostream& out, 
   figure.panels.emplace_back("Query: speedup over the traditional query", "epsilon", "speedup", LogScale::kX,
                              std::vector<PlotSeries>{{csv_path, 1, "8", "speedup (mean time)"},
                                                      {csv_path, 1, "($5*100)", "node visits culled (%)"}});
-  for (PlotPanel& panel : figure.panels) panel.key = "top right";
   render_figure(figure, progress);
   return problems;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #if SSCC_WITH_FCL
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -19,9 +20,10 @@ namespace {
 
 using Model = fcl::BVHModel<fcl::AABB<double>>;
 
-/// FCL's continuous leaf test, skipping triangle pairs that share a vertex.
+/// FCL's continuous leaf test, skipping triangle pairs that share a vertex or are excluded.
 class NonAdjacentNode : public fcl::detail::MeshContinuousCollisionTraversalNode<fcl::AABB<double>> {
  public:
+  explicit NonAdjacentNode(const ExcludedPairs& excluded) : excluded_(excluded) {}
   void leafTesting(int b1, int b2) const override {
     const int t1 = this->model1->getBV(b1).primitiveId();
     const int t2 = this->model2->getBV(b2).primitiveId();
@@ -30,18 +32,23 @@ class NonAdjacentNode : public fcl::detail::MeshContinuousCollisionTraversalNode
     for (int i = 0; i < 3; ++i) {
       if (a[i] == b[0] || a[i] == b[1] || a[i] == b[2]) return;
     }
+    if (excluded_.contains(t1, t2)) return;
     MeshContinuousCollisionTraversalNode::leafTesting(b1, b2);
   }
+
+ private:
+  const ExcludedPairs& excluded_;
 };
 
 }  // namespace
 
 struct FclSelfCcd::Impl {
   Model model;
-  bool started = false;
+  ExcludedPairs excluded;
 };
 
-FclSelfCcd::FclSelfCcd(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
+FclSelfCcd::FclSelfCcd(const TriangleMesh& mesh, ExcludedPairs excluded) : impl_(std::make_unique<Impl>()) {
+  impl_->excluded = std::move(excluded);
   std::vector<fcl::Vector3<double>> points(mesh.vertices().begin(), mesh.vertices().end());
   std::vector<fcl::Triangle> triangles;
   for (const Triangle& t : mesh.triangles()) triangles.emplace_back(t[0], t[1], t[2]);
@@ -61,7 +68,7 @@ std::vector<std::pair<int, int>> FclSelfCcd::step(const std::vector<Eigen::Vecto
     m.updateSubModel(std::vector<fcl::Vector3<double>>(x->begin(), x->end()));
     m.endUpdateModel(true, true);
   }
-  NonAdjacentNode node;
+  NonAdjacentNode node(impl_->excluded);
   fcl::CollisionRequest<double> request(1000000);
   fcl::detail::initialize(node, m, fcl::Transform3<double>::Identity(), m, fcl::Transform3<double>::Identity(),
                           request);
@@ -76,7 +83,7 @@ std::vector<std::pair<int, int>> FclSelfCcd::step(const std::vector<Eigen::Vecto
 #else
 
 struct FclSelfCcd::Impl {};
-FclSelfCcd::FclSelfCcd(const TriangleMesh&) {
+FclSelfCcd::FclSelfCcd(const TriangleMesh&, ExcludedPairs) {
   throw std::logic_error("sscc was built without FCL (SSCC_WITH_FCL=OFF)");
 }
 FclSelfCcd::~FclSelfCcd() = default;

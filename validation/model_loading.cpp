@@ -53,7 +53,15 @@ SubspaceModel load_model(const ModelSource& source, std::ostream& progress) {
   } else if (weights.size() == 0) {
     weights = Eigen::VectorXd::Ones(basis.cols());
   }
-  return SubspaceModel(std::move(mesh), basis, weights);
+  return with_rest_contacts_excluded(SubspaceModel(std::move(mesh), basis, weights), source.exclude_rest_contacts,
+                                     progress);
+}
+
+SubspaceModel with_rest_contacts_excluded(const SubspaceModel& model, bool exclude, std::ostream& progress) {
+  if (!exclude) return model;
+  SubspaceModel excluding = model.excluding_rest_contacts();
+  progress << excluding.excluded_pairs().size() << " pairs touch at rest and are excluded\n";
+  return excluding;
 }
 
 }  // namespace sscc::validation

@@ -14,8 +14,10 @@ std::string script_of(const Figure& figure) {
     << "'\nset datafile separator ','\n";
   if (figure.panels.size() > 1) g << "set multiplot layout 1," << figure.panels.size() << '\n';
   for (const PlotPanel& panel : figure.panels) {
-    g << "set title '" << panel.title << "'\nset xlabel '" << panel.x_label << "'\nset ylabel '" << panel.y_label
-      << "'\nset key " << panel.key << '\n';
+    // Titles verbatim (noenhanced): they hold file and scene names, whose underscores
+    // gnuplot would otherwise take for subscripts; labels keep the markup (||q||_M).
+    g << "set title '" << panel.title << "' noenhanced\nset xlabel '" << panel.x_label << "'\nset ylabel '"
+      << panel.y_label << "'\nset key " << panel.key << '\n';
     g << (panel.log_x ? "set logscale x\n" : "unset logscale x\n");
     g << (panel.log_y ? "set logscale y\n" : "unset logscale y\n");
     if (panel.y2_label.empty()) {

@@ -35,7 +35,8 @@ struct PlotPanel {
   std::string y2_label;  ///< empty: no right axis
   bool log_x, log_y;
   std::vector<PlotSeries> series;
-  std::string key = "top left";
+  /// gnuplot's key placement: below the axes by default, so that no legend covers a curve.
+  std::string key = "below";
 };
 
 /// Panels side by side in one PNG of width x height pixels.

@@ -35,7 +35,9 @@ long run_precompute(const PrecomputeCommandOptions& o, std::ostream& out, std::o
            << ", global radius " << certificates.global_radius() << '\n';
   if (certificates.node_radius(0) == 0.0) {
     progress << "precompute: warning: root radius 0: non-adjacent triangles touch or intersect at rest (or no "
-                "motion is needed to bring them together); the root certifies nothing\n";
+                "motion is needed to bring them together); the root certifies nothing"
+             << (o.model.exclude_rest_contacts ? "" : " (--exclude-rest-contacts ignores the pairs touching at rest)")
+             << '\n';
   }
   print_radius_per_level(bvh, certificates, out);
   char line[256];

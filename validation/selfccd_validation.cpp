@@ -78,7 +78,7 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
     progress << "method " << method << ": " << o.steps << " steps\n";
     MethodRun& run = runs[method];
     std::unique_ptr<FclSelfCcd> fcl;
-    if (method == "fcl") fcl = std::make_unique<FclSelfCcd>(model.mesh());
+    if (method == "fcl") fcl = std::make_unique<FclSelfCcd>(model.mesh(), model.excluded_pairs());
     for (int k = 0; k < o.steps; ++k) {
       const auto start = std::chrono::steady_clock::now();
       const double cpu_start = process_cpu_ms();

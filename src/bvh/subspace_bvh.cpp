@@ -134,7 +134,8 @@ void SubspaceBvh::compute_bounds(int n) {
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   Aabb rest = Aabb::empty();
-  double* mean = &mean_modes_[static_cast<std::size_t>(n) * 3 * r];
+  // data() + offset, not &[offset]: a model without modes (r = 0) has an empty array.
+  double* mean = mean_modes_.data() + static_cast<std::size_t>(n) * 3 * r;
   for (int v : vertices) {
     rest.add(mesh.vertices()[v]);
     for (int k = 0; k < 3; ++k) {
@@ -176,7 +177,7 @@ std::vector<int> SubspaceBvh::node_depths() const {
 
 SubspaceBvh::SubspaceBound SubspaceBvh::subspace_bound(int n) const {
   const int r = model_.mode_count();
-  return {centre_[n], half_[n], rate_[n], {&mean_modes_[static_cast<std::size_t>(n) * 3 * r], 3, r}};
+  return {centre_[n], half_[n], rate_[n], {mean_modes_.data() + static_cast<std::size_t>(n) * 3 * r, 3, r}};
 }
 
 Aabb SubspaceBvh::box(int n, const Eigen::VectorXd& q_hat, double q_hat_norm) const {

@@ -69,6 +69,11 @@ std::uint64_t Certificates::key_of(const SubspaceBvh& bvh, const CertificatePara
   hash.add(mesh.triangles().data(), mesh.triangles().size() * sizeof(Triangle));
   hash.add_value(model.mode_count());
   hash.add(model.scaled_basis().data(), static_cast<std::size_t>(model.scaled_basis().size()) * sizeof(double));
+  // Only a non-empty set enters the key: files of models without one keep theirs.
+  if (const ExcludedPairs& excluded = model.excluded_pairs(); !excluded.empty()) {
+    hash.add_value(excluded.size());
+    hash.add(excluded.pairs().data(), excluded.pairs().size() * sizeof(std::pair<int, int>));
+  }
   for (const SubspaceBvh::Node& node : bvh.nodes()) {
     const int fields[4] = {node.first_child, node.child_count, node.triangle_begin, node.triangle_end};
     hash.add(fields, sizeof(fields));
@@ -141,7 +146,9 @@ Certificates Certificates::read(const std::string& path, const SubspaceBvh& bvh)
   }
   Certificates certificates(bvh, parameters);
   if (certificates.key_ != key) {
-    r.fail("stale: computed for another mesh, basis, weights or hierarchy (key mismatch)");
+    r.fail(
+        "stale: computed for another mesh, basis, weights or hierarchy, or another set of excluded pairs "
+        "(key mismatch; a model excluding its rest contacts and one that does not have different keys)");
   }
   const auto valid = [](double x) { return x >= 0.0; };  // NaN fails; infinity means never
   certificates.global_radius_ = r.get<double>("global radius");

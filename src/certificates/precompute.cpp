@@ -80,13 +80,15 @@ class Precomputation {
     }
   }
 
-  /// Folds the non-adjacent pairs among `pairs` into the running minimum, in order of
-  /// their 1D bound; pairs whose bound reaches the minimum's lower bound cannot lower it.
+  /// Folds the considered pairs (neither adjacent nor excluded) among `pairs` into the
+  /// running minimum, in order of their 1D bound; pairs whose bound reaches the minimum's
+  /// lower bound cannot lower it.
   void add_triangle_pairs(const std::vector<std::pair<int, int>>& pairs, RunningMinimum& minimum,
                           Counters& counters) const {
     std::vector<std::pair<double, std::pair<int, int>>> ordered;
     for (const auto& [s, t] : pairs) {
-      if (!mesh_.adjacent(s, t)) ordered.push_back({one_dimensional_radius(triangles_[s], triangles_[t]), {s, t}});
+      if (bvh_.model().considers(s, t))
+        ordered.push_back({one_dimensional_radius(triangles_[s], triangles_[t]), {s, t}});
     }
     std::sort(ordered.begin(), ordered.end());
     for (std::size_t i = 0; i < ordered.size(); ++i) {
@@ -306,7 +308,9 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
 
 void Certificates::check_belongs_to(const SubspaceBvh& bvh) const {
   if (static_cast<int>(bvh.nodes().size()) != node_count() || key_of(bvh, parameters_) != key_) {
-    throw std::invalid_argument("certificates: computed for another mesh, basis, weights or hierarchy (key mismatch)");
+    throw std::invalid_argument(
+        "certificates: computed for another mesh, basis, weights or hierarchy, or another set of excluded pairs (key "
+        "mismatch)");
   }
 }
 

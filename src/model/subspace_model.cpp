@@ -8,6 +8,15 @@
 
 namespace sscc {
 
+namespace {
+
+const std::shared_ptr<const ExcludedPairs>& no_excluded_pairs() {
+  static const auto none = std::make_shared<const ExcludedPairs>();
+  return none;
+}
+
+}  // namespace
+
 SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis, const Eigen::VectorXd& weights) {
   const long rows = 3L * mesh.vertex_count();
   if (basis.rows() != rows) {
@@ -31,6 +40,29 @@ SubspaceModel::SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis, co
     throw std::invalid_argument("SubspaceModel: basis / sqrt(weight) overflows; a weight is too small");
   }
   state_ = std::make_shared<const State>(State{std::move(mesh), weights, std::move(scaled_basis)});
+  excluded_ = no_excluded_pairs();
+}
+
+SubspaceModel SubspaceModel::without_basis(TriangleMesh mesh) {
+  SubspaceModel model;
+  const long rows = 3L * mesh.vertex_count();
+  model.state_ = std::make_shared<const State>(State{std::move(mesh), Eigen::VectorXd(), RowMajorMatrix(rows, 0)});
+  model.excluded_ = no_excluded_pairs();
+  return model;
+}
+
+SubspaceModel SubspaceModel::excluding(ExcludedPairs excluded) const {
+  if (!excluded.empty() && excluded.triangle_count() != mesh().triangle_count()) {
+    throw std::invalid_argument("SubspaceModel: excluded pairs made for " + std::to_string(excluded.triangle_count()) +
+                                " triangles, the mesh has " + std::to_string(mesh().triangle_count()));
+  }
+  SubspaceModel model = *this;
+  model.excluded_ = std::make_shared<const ExcludedPairs>(std::move(excluded));
+  return model;
+}
+
+SubspaceModel SubspaceModel::excluding_rest_contacts() const {
+  return excluding(ExcludedPairs::touching_at_rest(mesh()));
 }
 
 Eigen::VectorXd SubspaceModel::scaled_coordinates(const Eigen::VectorXd& q) const {

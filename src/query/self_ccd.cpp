@@ -151,16 +151,17 @@ class StepContext {
     return swept_overlap(triangle_sweep(i), node_sweep(n), separation_);
   }
 
-  /// Kernels on the features of a non-adjacent triangle pair whose swept boxes meet. Each
-  /// feature pair is tested in one triangle pair only, its owner: the smallest
-  /// non-adjacent pair of triangles containing it. Whenever the feature's boxes overlap,
-  /// every triangle and node box containing them overlaps too, so the owner is visited.
+  /// Kernels on the features of a considered triangle pair (neither adjacent nor excluded)
+  /// whose swept boxes meet. Each feature pair is tested in one triangle pair only, its
+  /// owner: the smallest considered pair of triangles containing it. Whenever the feature's
+  /// boxes overlap, every triangle and node box containing them overlaps too, so the owner
+  /// is visited.
   /// The triangles at positions i and j of the BVH's order.
   void test_triangle_pair(int i, int j) {
     if (stopped()) return;
     const int a = bvh_.triangle_order()[i];
     const int b = bvh_.triangle_order()[j];
-    if (mesh_.adjacent(a, b) || !sweeps_may_touch(triangle_sweep(i), triangle_sweep(j), separation_)) return;
+    if (!considers(a, b) || !sweeps_may_touch(triangle_sweep(i), triangle_sweep(j), separation_)) return;
     ++stats_.triangle_pairs;
     const Aabb box_a = hull(triangle_sweep(i).start, triangle_sweep(i).end);
     const Aabb box_b = hull(triangle_sweep(j).start, triangle_sweep(j).end);
@@ -231,6 +232,10 @@ class StepContext {
     ++stats_.vertices_computed;
   }
 
+  /// Neither adjacent nor excluded (excluded_pairs.hpp): the pairs a query considers. The
+  /// exclusion lookup only for non-adjacent pairs, and an empty set answers at once.
+  bool considers(int a, int b) const { return !mesh_.adjacent(a, b) && !bvh_.model().excluded_pairs().contains(a, b); }
+
   Aabb point_box(int v) const { return {x0_[v].cwiseMin(x1_[v]), x0_[v].cwiseMax(x1_[v])}; }
 
   Aabb edge_box(int e) const {
@@ -238,23 +243,23 @@ class StepContext {
     return hull(point_box(ends[0]), point_box(ends[1]));
   }
 
-  /// Whether triangle t owns the vertex-face pair (v, f), v in t: the smallest non-adjacent
-  /// pair containing it is (t', f) for the smallest t' around v not adjacent to f (pairs
+  /// Whether triangle t owns the vertex-face pair (v, f), v in t: the smallest considered
+  /// pair containing it is (t', f) for the smallest t' around v considered with f (pairs
   /// order by their smaller member, and f is fixed), so the first such t' decides.
   bool owns_vertex_face(int t, int v, int f) const {
     for (const int* u = mesh_.triangles_of_vertex_begin(v); u != mesh_.triangles_of_vertex_end(v); ++u) {
-      if (!mesh_.adjacent(*u, f)) return *u == t;
+      if (considers(*u, f)) return *u == t;
     }
     return false;
   }
 
-  /// Whether `pair` (ordered, non-adjacent, its triangles containing edges e and g) is the
-  /// smallest non-adjacent triangle pair containing them: no smaller pair of their
-  /// triangles is non-adjacent (the cheap order test first).
+  /// Whether `pair` (ordered, considered, its triangles containing edges e and g) is the
+  /// smallest considered triangle pair containing them: no smaller pair of their triangles
+  /// is considered (the cheap order test first).
   bool owns_edge_edge(const std::pair<int, int>& pair, int e, int g) const {
     for (const int* t = mesh_.triangles_of_edge_begin(e); t != mesh_.triangles_of_edge_end(e); ++t) {
       for (const int* u = mesh_.triangles_of_edge_begin(g); u != mesh_.triangles_of_edge_end(g); ++u) {
-        if (std::make_pair(std::min(*t, *u), std::max(*t, *u)) < pair && !mesh_.adjacent(*t, *u)) return false;
+        if (std::make_pair(std::min(*t, *u), std::max(*t, *u)) < pair && considers(*t, *u)) return false;
       }
     }
     return true;
@@ -278,13 +283,13 @@ class StepContext {
                  {FeatureKind::kEdgeEdge, e, g, 1.0});
   }
 
-  /// The colliding triangle pairs: every non-adjacent pair containing a feature that hit,
+  /// The colliding triangle pairs: every considered pair containing a feature that hit,
   /// at the earliest of its features' times.
   std::vector<TrianglePairContact> pairs_from_features() const {
     EarliestPerKey<std::pair<int, int>> earliest;
     for (const FeatureContact& c : hits_.hits()) {
       for_each_triangle_pair_of(c.kind, mesh_, c.first, mesh_, c.second, [&](int t, int u) {
-        if (!mesh_.adjacent(t, u)) earliest.add({std::min(t, u), std::max(t, u)}, c.toi);
+        if (considers(t, u)) earliest.add({std::min(t, u), std::max(t, u)}, c.toi);
       });
     }
     std::vector<TrianglePairContact> pairs;
@@ -460,7 +465,7 @@ class DiscreteContext {
     const TriangleMesh& mesh = bvh_.model().mesh();
     const int a = bvh_.triangle_order()[i];
     const int b = bvh_.triangle_order()[j];
-    if (stop_ || mesh.adjacent(a, b)) return;
+    if (stop_ || !bvh_.model().considers(a, b)) return;
     const Triangle& ta = mesh.triangles()[a];
     const Triangle& tb = mesh.triangles()[b];
     for (int v : ta) ensure(v);

@@ -19,6 +19,8 @@ struct CertifiedModel {
   CertifiedModel(TriangleMesh mesh, const Eigen::MatrixXd& basis, const Eigen::VectorXd& weights,
                  const CertificateParameters& parameters = {})
       : model(std::move(mesh), basis, weights), bvh(model), certificates(Certificates::precompute(bvh, parameters)) {}
+  explicit CertifiedModel(SubspaceModel built, const CertificateParameters& parameters = {})
+      : model(std::move(built)), bvh(model), certificates(Certificates::precompute(bvh, parameters)) {}
 };
 
 /// Two sheets 0.2 apart; mode 0 lowers the top sheet by its height (contact at q_0 = 1),
@@ -44,6 +46,15 @@ inline std::unique_ptr<CertifiedModel> certified_sphere() {
   TriangleMesh mesh = uv_sphere(8, 16);
   const Eigen::MatrixXd basis = polynomial_basis(mesh, 27);
   return std::make_unique<CertifiedModel>(std::move(mesh), basis, Eigen::VectorXd::Ones(27));
+}
+
+/// Two spheres cutting each other at rest, the 27 polynomial modes, the pairs touching at
+/// rest excluded.
+inline std::unique_ptr<CertifiedModel> certified_touching_spheres() {
+  TriangleMesh mesh = two_spheres(6, 12, kTwoSpheresOffset);
+  const Eigen::MatrixXd basis = polynomial_basis(mesh, 27);
+  return std::make_unique<CertifiedModel>(
+      SubspaceModel(std::move(mesh), basis, Eigen::VectorXd::Ones(27)).excluding_rest_contacts());
 }
 
 /// A scaled configuration of norm `norm` in a random direction.

@@ -8,8 +8,8 @@ namespace {
 
 using sscc::test::CertifiedModel;
 
-/// The non-adjacent triangle pairs, one from each list (or within one list when the lists are
-/// the same), that intersect at configuration q (exact test).
+/// The considered triangle pairs (neither adjacent nor excluded), one from each list (or
+/// within one list when the lists are the same), that intersect at configuration q (exact).
 int intersecting_pairs(const sscc::SubspaceModel& model, const std::vector<int>& first, const std::vector<int>& second,
                        bool same, const Eigen::VectorXd& q) {
   const sscc::TriangleMesh& mesh = model.mesh();
@@ -18,7 +18,7 @@ int intersecting_pairs(const sscc::SubspaceModel& model, const std::vector<int>&
   for (std::size_t i = 0; i < first.size(); ++i) {
     for (std::size_t j = same ? i + 1 : 0; j < second.size(); ++j) {
       const int a = first[i], b = second[j];
-      if (mesh.adjacent(a, b)) continue;
+      if (!model.considers(a, b)) continue;
       const sscc::Triangle& ta = mesh.triangles()[a];
       const sscc::Triangle& tb = mesh.triangles()[b];
       found += sscc::ccd::triangles_intersect(x[ta[0]], x[ta[1]], x[ta[2]], x[tb[0]], x[tb[1]], x[tb[2]]);
@@ -82,6 +82,12 @@ TEST_CASE("certificates: configurations inside every node and sibling certificat
     check_certificates_by_sampling(*sscc::test::certified_sheets(Eigen::Vector3d(4, 0.5, 2)), 24, 2);
   }
   SECTION("sphere, 27 polynomial modes") { check_certificates_by_sampling(*sscc::test::certified_sphere(), 8, 3); }
+  SECTION("two spheres touching at rest, those pairs excluded") {
+    const auto m = sscc::test::certified_touching_spheres();
+    REQUIRE_FALSE(m->model.excluded_pairs().empty());
+    REQUIRE(m->certificates.node_radius(0) > 0.0);
+    check_certificates_by_sampling(*m, 6, 4);
+  }
 }
 
 TEST_CASE("certificates: never above a known contact, in the weighted norm", "[certificates]") {

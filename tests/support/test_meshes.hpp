@@ -105,3 +105,24 @@ inline TriangleMesh box_surface(const Eigen::Vector3d& size, const std::array<in
 }
 
 }  // namespace sscc::test
+
+namespace sscc::test {
+
+/// The offset of two_spheres that the tests use: the spheres cut each other in a small circle.
+inline const Eigen::Vector3d kTwoSpheresOffset(1.8713, 0.0371, 0.0237);
+
+/// Two UV spheres of radius 1, the second moved by `offset`, sharing no vertex: closer than 2
+/// they cut each other, a mesh that touches itself at rest. An offset off the axes keeps
+/// the two spheres' vertex planes apart (along x alone, edges in the plane y = 0 of one
+/// cross edges 1e-16 off it of the other: pairs closer than rounding, certificates 0).
+inline TriangleMesh two_spheres(int rings, int segments, const Eigen::Vector3d& offset) {
+  const TriangleMesh one = uv_sphere(rings, segments);
+  std::vector<Eigen::Vector3d> v = one.vertices();
+  std::vector<Triangle> t = one.triangles();
+  const int base = one.vertex_count();
+  for (const Eigen::Vector3d& p : one.vertices()) v.push_back(p + offset);
+  for (const Triangle& tri : one.triangles()) t.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+  return TriangleMesh(std::move(v), std::move(t));
+}
+
+}  // namespace sscc::test

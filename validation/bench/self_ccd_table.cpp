@@ -65,7 +65,7 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
     options[kTraditional].use_normal_cones = false;
     options[kCones].use_normal_cones = true;
     for (SelfCcdOptions& each : options) each.threads = 1;
-    FclSelfCcd fcl(model.mesh());
+    FclSelfCcd fcl(model.mesh(), model.excluded_pairs());
     for (double amplitude : o.amplitudes) {
       progress << "self-CCD table: " << mesh << " amplitude " << amplitude << '\n';
       const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, amplitude, o.seed);

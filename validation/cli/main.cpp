@@ -147,12 +147,17 @@ const char* kUsage =
   std::exit(2);
 }
 
-/// "--flag value" pairs and "--quiet", checked against the command's known flags.
+/// Flags that take no value (besides --quiet).
+const std::set<std::string> kSwitches{"--exclude-rest-contacts"};
+
+/// "--flag value" pairs, "--quiet" and switches, checked against the command's known flags.
 struct Flags {
   bool quiet = false;
+  std::set<std::string> switches;
   std::map<std::string, std::string> values;
 
   bool has(const std::string& flag) const { return values.count(flag) != 0; }
+  bool on(const std::string& flag) const { return switches.count(flag) != 0; }
   const std::string& text(const std::string& flag) const { return values.at(flag); }
 
   /// Any finite number.
@@ -195,6 +200,10 @@ Flags parse_flags(const std::vector<std::string>& args, const std::set<std::stri
       continue;
     }
     if (known.count(flag) == 0) usage_error("unknown option '" + flag + "' for '" + command + "'");
+    if (kSwitches.count(flag) != 0) {
+      flags.switches.insert(flag);
+      continue;
+    }
     if (i + 1 >= args.size()) usage_error(flag + " needs a value");
     flags.values[flag] = args[++i];
   }
@@ -246,12 +255,14 @@ sscc::validation::ModelSource model_source(const Flags& flags) {
   source.mesh = flags.text("--mesh");
   if (flags.has("--basis")) source.basis = flags.text("--basis");
   if (flags.has("--weights")) source.weights = flags.text("--weights");
+  source.exclude_rest_contacts = flags.on("--exclude-rest-contacts");
   return source;
 }
 
 int run_precompute(const std::vector<std::string>& args) {
-  const Flags flags =
-      parse_flags(args, {"--mesh", "--basis", "--weights", "--epsilon", "--global-scale", "--output"}, "precompute");
+  const Flags flags = parse_flags(
+      args, {"--mesh", "--basis", "--weights", "--epsilon", "--global-scale", "--output", "--exclude-rest-contacts"},
+      "precompute");
   if (!flags.has("--mesh")) usage_error("precompute needs --mesh FILE");
   if (!flags.has("--output")) usage_error("precompute needs --output FILE.sscc");
   sscc::validation::PrecomputeCommandOptions options;
@@ -345,9 +356,23 @@ int run_basis(const std::vector<std::string>& args) {
 }
 
 /// The scene flags shared by demo and bench.
-const std::set<std::string> kSceneFlags{"--scene",  "--mesh",    "--basis",   "--modes",     "--objects",
-                                        "--steps",  "--dt",      "--seed",    "--fcl-steps", "--damping",
-                                        "--youngs", "--poisson", "--density", "--cache",     "--strike-speed"};
+const std::set<std::string> kSceneFlags{"--scene",
+                                        "--mesh",
+                                        "--basis",
+                                        "--modes",
+                                        "--objects",
+                                        "--steps",
+                                        "--dt",
+                                        "--seed",
+                                        "--fcl-steps",
+                                        "--damping",
+                                        "--youngs",
+                                        "--poisson",
+                                        "--density",
+                                        "--cache",
+                                        "--strike-speed",
+                                        "--scale",
+                                        "--exclude-rest-contacts"};
 
 void scene_run_options(const Flags& flags, sscc::validation::SceneRunOptions& o) {
   if (flags.has("--scene")) o.scene = flags.text("--scene");
@@ -365,6 +390,8 @@ void scene_run_options(const Flags& flags, sscc::validation::SceneRunOptions& o)
   if (flags.has("--density")) o.density = flags.real("--density");
   if (flags.has("--cache")) o.cache_dir = flags.text("--cache");
   if (flags.has("--strike-speed")) o.strike_speed = flags.real("--strike-speed");
+  if (flags.has("--scale")) o.scale = flags.text("--scale");
+  o.exclude_rest_contacts = flags.on("--exclude-rest-contacts");
 }
 
 std::set<std::string> with_flags(std::set<std::string> flags, std::initializer_list<std::string> more) {
@@ -443,10 +470,10 @@ int run_poses(const std::vector<std::string>& args) {
 }
 
 int run_selfccd(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(
-      args,
-      {"--mesh", "--basis", "--weights", "--steps", "--amplitude", "--burst", "--seed", "--methods", "--certificates"},
-      "selfccd");
+  const Flags flags = parse_flags(args,
+                                  {"--mesh", "--basis", "--weights", "--steps", "--amplitude", "--burst", "--seed",
+                                   "--methods", "--certificates", "--exclude-rest-contacts"},
+                                  "selfccd");
   sscc::validation::SelfCcdValidationOptions options;
   if (!flags.has("--mesh")) usage_error("selfccd needs --mesh FILE");
   options.model = model_source(flags);

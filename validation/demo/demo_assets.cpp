@@ -8,7 +8,9 @@
 #include <sstream>
 
 #include "basis_command.hpp"
+#include "demo/mesh_units.hpp"
 #include "demo/spring_mesh.hpp"
+#include "model_loading.hpp"
 #include "sscc/basis/modal_analysis.hpp"
 #include "sscc/common/timing.hpp"
 #include "sscc/mesh/mesh_io.hpp"
@@ -23,6 +25,11 @@ namespace sscc::validation {
 namespace fs = std::filesystem;
 
 std::string data_dir() { return SSCC_DATA_DIR; }
+
+double default_bunny_diagonal() {
+  static const double diagonal = read_mesh(data_dir() + "/bunny15k.off").bounding_box_diagonal();
+  return diagonal;
+}
 
 namespace {
 
@@ -64,6 +71,16 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
   }();
   progress << "demo: mesh " << assets.name << ": " << mesh.vertex_count() << " vertices, " << mesh.triangle_count()
            << " triangles\n";
+  if (!o.scale.empty()) {
+    const double factor = scale_factor(o.scale, mesh, default_bunny_diagonal());
+    mesh = scaled(mesh, factor);
+    progress << "demo: mesh scaled by " << factor << " (--scale " << o.scale << "): " << mesh.bounding_box_diagonal()
+             << " m across\n";
+  }
+  if (!o.mesh.empty()) {
+    if (const std::string warning = size_warning(mesh, default_bunny_diagonal()); !warning.empty())
+      progress << "demo: " << warning << '\n';
+  }
   Eigen::MatrixXd basis;
   Eigen::VectorXd weights;
   // Cached files are named by what they were made from, so that other materials or meshes
@@ -104,9 +121,12 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
                << " Hz\n";
     }
   }
-  assets.model = std::make_unique<SubspaceModel>(std::move(mesh), basis, weights);
+  assets.model = std::make_unique<SubspaceModel>(
+      with_rest_contacts_excluded(SubspaceModel(std::move(mesh), basis, weights), o.exclude_rest_contacts, progress));
   assets.bvh = std::make_unique<SubspaceBvh>(*assets.model);
-  const std::string certificate_path = stem + ".sscc";  // the file checks itself against the model too
+  // The file checks itself against the model too; models with and without the rest contacts
+  // excluded keep a file each.
+  const std::string certificate_path = stem + (o.exclude_rest_contacts ? "-excluding-rest-contacts" : "") + ".sscc";
   std::string why = "a fresh precomputation was asked for";
   if (!o.fresh_certificates) {
     try {

@@ -24,7 +24,9 @@ struct DemoAssetOptions {
   int modes = 30;
   ElasticMaterial material;
   std::string cache_dir;
-  bool fresh_certificates = false;  ///< precompute even when the cached file is valid
+  bool fresh_certificates = false;     ///< precompute even when the cached file is valid
+  std::string scale;                   ///< "auto", a factor, or "" (as read) for the rest positions
+  bool exclude_rest_contacts = false;  ///< ignore the pairs touching at rest (excluded_pairs.hpp)
 };
 
 struct DemoAssets {
@@ -40,5 +42,9 @@ DemoAssets load_demo_assets(const DemoAssetOptions& options, std::ostream& progr
 
 /// The repository's data directory (the shipped demo mesh).
 std::string data_dir();
+
+/// The bounding-box diagonal of the default bunny (data/bunny15k.off), in metres: the size
+/// the scenes' materials and impulses are made for (mesh_units.hpp).
+double default_bunny_diagonal();
 
 }  // namespace sscc::validation

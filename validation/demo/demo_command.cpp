@@ -18,19 +18,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The path of the demo's output file `name` (demo_<scene>_<name>).
-std::string output_path(const DemoOptions& demo, const std::string& name) {
-  return demo.output_dir + "/demo_" + demo.run.scene + "_" + name;
+/// The path of the demo's output file `name` (demo_<scene>_<name>; the scene as run, named
+/// after its mesh when one was given).
+std::string output_path(const DemoOptions& demo, const SceneRun& run, const std::string& name) {
+  return demo.output_dir + "/demo_" + run.scene + "_" + name;
 }
 
 void write_time_plot(const DemoOptions& demo, const SceneRun& run, std::ostream& progress) {
-  const std::string csv = output_path(demo, "time_per_step.csv");
+  const std::string csv = output_path(demo, run, "time_per_step.csv");
   std::ofstream file(csv);
   file << "step,sscc_ms\n";
   for (std::size_t k = 0; k < run.sscc.ms.size(); ++k) file << k << ',' << run.sscc.ms[k] << '\n';
   file.close();
   // The traditional query's steps (every step, or a regular sample of them).
-  const std::string traditional_csv = output_path(demo, "traditional_time_per_step.csv");
+  const std::string traditional_csv = output_path(demo, run, "traditional_time_per_step.csv");
   std::ofstream traditional(traditional_csv);
   traditional << "step,traditional_ms\n";
   for (std::size_t i = 0; i < run.compared.size(); ++i) {
@@ -39,17 +40,17 @@ void write_time_plot(const DemoOptions& demo, const SceneRun& run, std::ostream&
   traditional.close();
   const std::string sampled =
       run.traditional_every > 1 ? ", every " + std::to_string(run.traditional_every) + "th step" : "";
-  PlotPanel panel("Continuous collision detection per step, " + demo.run.scene + " scene", "time step",
-                  "CCD time per step (ms)", LogScale::kY,
-                  {{traditional_csv, 1, "2", "traditional (swept-box BVH" + sampled + ")", "lines lw 2"},
-                   {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}});
-  panel.key = "outside bottom center horizontal";  // below the axes: never over the curves
-  render_figure({output_path(demo, "time_per_step.png"), 900, 500, {panel}}, progress);
+  const PlotPanel panel("Continuous collision detection per step, " + run.scene + " scene", "time step",
+                        "CCD time per step (ms)", LogScale::kY,
+                        {{traditional_csv, 1, "2", "traditional (swept-box BVH" + sampled + ")", "lines lw 2"},
+                         {csv, 1, "2", "SSCC (certificates)", "lines lw 2"}});
+  render_figure({output_path(demo, run, "time_per_step.png"), 900, 500, {panel}}, progress);
 }
 
-void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Certificates& certificates,
-                       std::ostream& progress) {
-  const std::string csv = output_path(demo, "radius_per_level.csv");
+void write_radius_plot(const DemoOptions& demo, const SceneRun& run, std::ostream& progress) {
+  const SubspaceBvh& bvh = *run.assets.bvh;
+  const Certificates& certificates = *run.assets.certificates;
+  const std::string csv = output_path(demo, run, "radius_per_level.csv");
   std::ostringstream levels;
   print_radius_per_level(bvh, certificates, levels);
   std::ofstream file(csv);
@@ -65,11 +66,10 @@ void write_radius_plot(const DemoOptions& demo, const SubspaceBvh& bvh, const Ce
     }
   }
   file.close();
-  PlotPanel panel("Certificate radius per tree level, " + demo.run.scene + " scene", "tree level (0: root)",
-                  "certificate radius ||q||_M", LogScale::kY,
-                  {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
-  panel.key = "outside bottom center horizontal";
-  render_figure({output_path(demo, "radius_per_level.png"), 700, 500, {panel}}, progress);
+  const PlotPanel panel("Certificate radius per tree level, " + run.scene + " scene", "tree level (0: root)",
+                        "certificate radius ||q||_M", LogScale::kY,
+                        {{csv, 1, "2", "min"}, {csv, 1, "3", "median"}, {csv, 1, "4", "max"}});
+  render_figure({output_path(demo, run, "radius_per_level.png"), 700, 500, {panel}}, progress);
 }
 
 /// Below this step rate (Hz) the steps are too coarse to be heard: no sound file.
@@ -80,7 +80,7 @@ constexpr double kLowestAudioRate = 8000.0;
 std::string write_sound(const DemoOptions& demo, const SceneRun& run, std::ostream& progress) {
   const double rate = 1.0 / run.dt;
   if (rate < kLowestAudioRate || run.sound.empty()) return "";
-  const std::string path = output_path(demo, "sound.wav");
+  const std::string path = output_path(demo, run, "sound.wav");
   try {
     write_wav(path, run.sound, static_cast<int>(std::lround(rate)));
   } catch (const std::runtime_error& e) {
@@ -115,7 +115,7 @@ long run_demo(const DemoOptions& demo, std::ostream& out, std::ostream& progress
   const SubspaceModel& model = *run.assets.model;
   write_time_plot(demo, run, progress);
   const std::string sound = write_sound(demo, run, progress);
-  write_radius_plot(demo, *run.assets.bvh, *run.assets.certificates, progress);
+  write_radius_plot(demo, run, progress);
 
   char line[512];
   out << "\nscene " << run.scene << ": " << run.objects << " objects, " << run.steps << " steps of " << run.dt << " s, "

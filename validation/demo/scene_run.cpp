@@ -176,7 +176,10 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   asset_options.material = material;
   asset_options.cache_dir = o.cache_dir;
   asset_options.fresh_certificates = o.fresh_certificates;
+  asset_options.scale = o.scale;
+  asset_options.exclude_rest_contacts = o.exclude_rest_contacts;
   run.assets = load_demo_assets(asset_options, progress);
+  if (!o.mesh.empty()) run.scene = run.assets.name;  // a custom mesh's scene is not "bunnies"
   const SubspaceModel& model = *run.assets.model;
   const SelfCcd detector(*run.assets.bvh, *run.assets.certificates);
 
@@ -203,7 +206,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
     if (o.strike_speed) d.strike_speed = *o.strike_speed;
     motion_source = std::make_unique<EarDrop>(model, mass, d);
   }
-  progress << "scene " << o.scene << ": " << run.objects << " objects x " << run.steps << " steps of " << run.dt
+  progress << "scene " << run.scene << ": " << run.objects << " objects x " << run.steps << " steps of " << run.dt
            << " s, traditional on every " << run.traditional_every << "; " << model.mesh().triangle_count()
            << " triangles, " << model.mode_count() << " modes; root certificate radius "
            << run.assets.certificates->node_radius(0) << '\n';
@@ -229,8 +232,9 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
       for (std::size_t i = 0; i < steps.size(); ++i) {
         if (detector.query_discrete(steps[i].q0, discrete_without).collided()) {
           throw std::runtime_error(
-              "scene " + o.scene + ": object " + std::to_string(i) +
-              " starts in contact with itself; the continuous queries assume a contact-free start");
+              "scene " + run.scene + ": object " + std::to_string(i) +
+              " starts in contact with itself; the continuous queries assume a contact-free start (if it touches "
+              "itself at rest, --exclude-rest-contacts ignores those pairs)");
         }
       }
     }
@@ -274,7 +278,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
       sampled_reports.push_back(fast);
     }
     if ((k + 1) % progress_every == 0 || k + 1 == run.steps) {
-      progress << "scene " << o.scene << ": step " << (k + 1) << "/" << run.steps << ", SSCC " << run.sscc.mean()
+      progress << "scene " << run.scene << ": step " << (k + 1) << "/" << run.steps << ", SSCC " << run.sscc.mean()
                << " ms, traditional " << run.traditional.mean() << " ms per step so far; contacts in "
                << run.contacts.steps_with_contacts << " steps\n"
                << std::flush;
@@ -286,7 +290,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   }
 
   if (!sampled.empty()) {
-    FclSelfCcd fcl(model.mesh());
+    FclSelfCcd fcl(model.mesh(), model.excluded_pairs());
     for (std::size_t s = 0; s < sampled.size(); ++s) {
       double step_ms = 0.0;
       for (int i = 0; i < run.objects; ++i) {
@@ -305,8 +309,8 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
         }
       }
       run.fcl_ms.push_back(step_ms);
-      progress << "scene " << o.scene << ": FCL on sampled step " << (s + 1) << "/" << sampled.size() << ": " << step_ms
-               << " ms\n";
+      progress << "scene " << run.scene << ": FCL on sampled step " << (s + 1) << "/" << sampled.size() << ": "
+               << step_ms << " ms\n";
     }
   }
   run.seconds = milliseconds_since(start) / 1e3;

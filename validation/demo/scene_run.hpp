@@ -49,8 +49,10 @@ struct SceneRunOptions {
   std::optional<double> damping_ratio, youngs_modulus, poisson_ratio, density;
   std::optional<double> strike_speed;  ///< m/s (the spring: the slowest of its strikes); empty: the scene's
   std::string cache_dir = "demo-cache";
-  bool fresh_certificates = false;  ///< precompute even when a cached file is valid (to time it)
-  bool record_steps = false;        ///< keep every step's object motions (for replays)
+  bool fresh_certificates = false;     ///< precompute even when a cached file is valid (to time it)
+  bool record_steps = false;           ///< keep every step's object motions (for replays)
+  std::string scale;                   ///< --scale auto|S of the mesh ("" : as read); mesh_units.hpp
+  bool exclude_rest_contacts = false;  ///< --exclude-rest-contacts: ignore the pairs touching at rest
 };
 
 /// Per-step milliseconds and what the method found.
@@ -80,7 +82,7 @@ struct ContactTotals {
 };
 
 struct SceneRun {
-  std::string scene;
+  std::string scene;  ///< the scene's name, or the mesh's for a mesh given with --mesh
   int objects = 0, steps = 0;
   double dt = 0.0;
   DemoAssets assets;

@@ -5,6 +5,8 @@
 // sibling nodes (a, b), the inter-node radius R_ab: no triangle under a touches a
 // non-adjacent triangle under b while ||q||_M < R_ab. The set ||q||_M < R is an ellipsoid,
 // convex, so a straight-line step whose two ends lie inside it is certified whole.
+// Pairs the model excludes (excluded_pairs.hpp) count as adjacent here, as in the queries;
+// the key records them, so certificates of a model with and without them differ.
 //
 // Guarantee: every stored radius is a lower bound of the true one (for the exact positions
 // p + U q): built from the conservative triangle-pair bounds of triangle_pair_bound.hpp, the
@@ -70,7 +72,7 @@ class Certificates {
                                  const PrecomputeProgress& progress = {});
 
   /// For a model and hierarchy, the identity the certificates are tied to: a hash of the
-  /// rest positions, triangles, scaled basis, the tree and the parameters.
+  /// rest positions, triangles, scaled basis, excluded pairs, the tree and the parameters.
   static std::uint64_t key_of(const SubspaceBvh& bvh, const CertificateParameters& parameters);
 
   /// Writes the versioned, checksummed binary file; throws std::runtime_error on I/O failure.

@@ -6,6 +6,10 @@
 // downstream is a plain 2-norm of q_hat (SSCC paper, eq. 3). Immutable once built; safe to
 // share between threads. A model is a handle: copies share the same immutable mesh and
 // basis (copying is O(1)), so whatever holds a model keeps it alive.
+//
+// A model may carry excluded triangle pairs (excluded_pairs.hpp), on request: the pairs
+// touching in the rest shape. Every hierarchy, certificate and query built on the model
+// ignores them, and the certificates' key records them.
 #pragma once
 
 #include <Eigen/Core>
@@ -15,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+#include "sscc/mesh/excluded_pairs.hpp"
 #include "sscc/mesh/triangle_mesh.hpp"
 
 namespace sscc {
@@ -26,6 +31,21 @@ class SubspaceModel {
   /// Throws std::invalid_argument when the basis is not 3V x r (naming both sizes), r is 0,
   /// the weights are not r positive finite numbers, or any entry is not finite.
   SubspaceModel(TriangleMesh mesh, const Eigen::MatrixXd& basis, const Eigen::VectorXd& weights);
+
+  /// A model with no modes (r = 0): the mesh alone, for detectors that are handed vertex
+  /// positions each step (position_ccd.hpp) rather than reduced coordinates.
+  static SubspaceModel without_basis(TriangleMesh mesh);
+
+  /// This model (sharing its mesh and basis) with `excluded` ignored by every query and
+  /// certificate built on it. Throws std::invalid_argument when the set was made for a mesh
+  /// of another triangle count.
+  SubspaceModel excluding(ExcludedPairs excluded) const;
+  /// excluding(ExcludedPairs::touching_at_rest(mesh())): the pairs touching at rest.
+  SubspaceModel excluding_rest_contacts() const;
+  /// The excluded pairs (empty unless excluding() made this model).
+  const ExcludedPairs& excluded_pairs() const { return *excluded_; }
+  /// Whether queries consider triangles a and b: neither adjacent nor excluded.
+  bool considers(int a, int b) const { return !state_->mesh.adjacent(a, b) && !excluded_->contains(a, b); }
 
   const TriangleMesh& mesh() const { return state_->mesh; }
   int mode_count() const { return static_cast<int>(state_->weights.size()); }
@@ -77,7 +97,10 @@ class SubspaceModel {
     Eigen::VectorXd weights;
     RowMajorMatrix scaled_basis;
   };
+  SubspaceModel() = default;
+
   std::shared_ptr<const State> state_;
+  std::shared_ptr<const ExcludedPairs> excluded_;
 };
 
 }  // namespace sscc

@@ -10,6 +10,8 @@
 // x = p + U_hat q_hat (the leaf kernels are exact; the node bounds are conservative, with a
 // margin for the rounding of those positions), so nothing is missed and nothing is
 // invented. Every feature pair is tested once per query, whichever triangle pairs share it.
+// Pairs the model excludes (SubspaceModel::excluding, excluded_pairs.hpp) are treated as
+// adjacent ones: never reported, and their features tested only through the pairs considered.
 //
 // With certificates (SSCC paper, Algorithm 1 made continuous): s = max(||q0||_M, ||q1||_M)
 // is computed once per step; intra(n) returns when s < R_n and inter(a, b) of siblings when
@@ -165,7 +167,8 @@ class SelfCcd {
 
   /// The traditional query on explicit vertex positions at both ends of the step (each
   /// vertex moving linearly): for poses the subspace does not hold, where certificates do
-  /// not apply. Refitted boxes, the same traversal and kernels. Throws
+  /// not apply. Simulators without a subspace use PositionCcd (position_ccd.hpp), built from
+  /// the mesh alone. Refitted boxes, the same traversal and kernels. Throws
   /// std::invalid_argument for a wrong count or a NaN/infinity.
   SelfCcdReport query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
                                 const SelfCcdOptions& options = {}) const;
