@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Mutation testing: is the test suite strong enough to notice a broken guarantee?
+#
+# Each mutant is a compile definition, SSCC_MUTANT_<NAME>, that breaks one guarantee at one
+# spot of the library (grep -rn SSCC_MUTANT_ src ccd_kernels include); normal builds never
+# define one, so the hooks compile to nothing. Each is built into build-mutants/<name> (the
+# test target only; ccache serves every file the definition does not change) and run
+# against the tests that guard its guarantee. A mutant is KILLED when those tests fail,
+# SURVIVED when they pass. The same tests must first pass on an unmutated build.
+#
+#   bash scripts/mutants.sh            # every mutant
+#   bash scripts/mutants.sh NAME...    # some (names without the SSCC_MUTANT_ prefix)
+#
+# Exits 1 when a mutant survives (or a build fails), 2 when the unmutated build fails.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# Mutant -> the Catch2 test spec that must notice it.
+declare -A guard=(
+  [OWNS_ALWAYS_TRUE]='[brute_force]'               # each feature pair tested once (self_ccd.cpp)
+  [NO_SHIFT_MARGIN]='[moving_frame]'               # moving-frame rounding pad (moving_frame.hpp)
+  [SEPARATION_3D]='[separation]'                   # minimum separation searched at d (kernels.cpp)
+  [INFLATE_RADII]='[tightness]'                    # radii but the root's x1.1 (precompute.cpp)
+  [NO_CONSTANT_MODE_MULTIPLIER]='[bounds]'         # pair bound >= perturbation bound (triangle_pair_bound.cpp)
+  [BOX_BOX_SINGLE_MODE]='[bounds]'                 # box-box bound in 2-norm, not per mode (box_box_bound.cpp)
+  [ACCEPT_REFLECTIONS]='[frames]'                  # frames with det < 0 refused (scene.cpp)
+  [NO_POSITION_ROUNDING]='[rounding]'              # certificates pad position rounding (triangle_pair_bound.cpp)
+  [GRAM_PAD_FIXED]='[rounding]'                    # Gram pad grows with r (triangle_pair_bound.hpp)
+)
+order=(OWNS_ALWAYS_TRUE NO_SHIFT_MARGIN SEPARATION_3D INFLATE_RADII NO_CONSTANT_MODE_MULTIPLIER BOX_BOX_SINGLE_MODE
+  ACCEPT_REFLECTIONS NO_POSITION_ROUNDING GRAM_PAD_FIXED)
+if [ $# -gt 0 ]; then order=("$@"); fi
+for name in "${order[@]}"; do
+  if [ -z "${guard[$name]+set}" ]; then echo "mutants: unknown mutant $name" >&2; exit 2; fi
+  if ! grep -rq "SSCC_MUTANT_$name\b" src ccd_kernels include; then
+    echo "mutants: SSCC_MUTANT_$name has no hook in the library" >&2; exit 2
+  fi
+done
+
+# Builds the test target into build-mutants/<dir> with the given CMAKE_CXX_FLAGS.
+build() {
+  local dir=build-mutants/$1 flags=$2
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_FLAGS="$flags" \
+    -DSSCC_BUILD_VALIDATION=ON -DSSCC_BUILD_TESTS=ON >"$dir.log" 2>&1 &&
+    cmake --build "$dir" -j2 --target sscc_tests >>"$dir.log" 2>&1
+}
+
+# Runs a spec; 0 when its tests pass. A run that does not end in 10 minutes counts as failing.
+run() { timeout 600 "build-mutants/$1/bin/sscc_tests" "$2" >"build-mutants/$1.tests.log" 2>&1; }
+
+mkdir -p build-mutants
+start=$SECONDS
+mapfile -t specs < <(for name in "${order[@]}"; do echo "${guard[$name]}"; done | sort -u)
+if ! build unmutated ""; then echo "mutants: the unmutated build failed (build-mutants/unmutated.log)" >&2; exit 2; fi
+for spec in "${specs[@]}"; do
+  if ! run unmutated "$spec"; then
+    echo "mutants: $spec fails without a mutant (build-mutants/unmutated.tests.log)" >&2
+    exit 2
+  fi
+done
+
+printf '%-30s %-22s %-9s %s\n' mutant tests result seconds
+survived=0
+for name in "${order[@]}"; do
+  begin=$SECONDS
+  dir=$(echo "$name" | tr 'A-Z_' 'a-z-')
+  if ! build "$dir" "-DSSCC_MUTANT_$name"; then
+    result="BUILD-FAILED"
+    survived=$((survived + 1))
+  elif run "$dir" "${guard[$name]}"; then
+    result="SURVIVED"
+    survived=$((survived + 1))
+  else
+    result="KILLED"
+  fi
+  printf '%-30s %-22s %-9s %d\n' "$name" "${guard[$name]}" "$result" $((SECONDS - begin))
+done
+echo "mutants: ${#order[@]} run, $survived survived or failed to build, $((SECONDS - start)) s"
+[ "$survived" -eq 0 ]
