@@ -3,9 +3,11 @@
 #
 # Each mutant is a compile definition, SSCC_MUTANT_<NAME>, that breaks one guarantee at one
 # spot of the library (grep -rn SSCC_MUTANT_ src ccd_kernels include); normal builds never
-# define one, so the hooks compile to nothing. Each is built into build-mutants/<name> (the
-# test target only; ccache serves every file the definition does not change) and run
-# against the tests that guard its guarantee. A mutant is KILLED when those tests fail,
+# define one, so the hooks compile to nothing. Each is built into build-mutant-<name>/ (the
+# test target only) and run against the tests that guard its guarantee. The build
+# directories sit beside build/, at its depth: ccache (base_dir = /work) hashes paths
+# relative to the build directory, so files the definition does not change come from the
+# cache, built there or by an earlier mutant. A mutant is KILLED when those tests fail,
 # SURVIVED when they pass. The same tests must first pass on an unmutated build.
 #
 #   bash scripts/mutants.sh            # every mutant
@@ -37,24 +39,23 @@ for name in "${order[@]}"; do
   fi
 done
 
-# Builds the test target into build-mutants/<dir> with the given CMAKE_CXX_FLAGS.
+# Builds the test target into build-mutant-<name>/ with the given CMAKE_CXX_FLAGS (log: build.log there).
 build() {
-  local dir=build-mutants/$1 flags=$2
+  local dir=build-mutant-$1 flags=$2
+  mkdir -p "$dir"
   cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_FLAGS="$flags" \
-    -DSSCC_BUILD_VALIDATION=ON -DSSCC_BUILD_TESTS=ON >"$dir.log" 2>&1 &&
-    cmake --build "$dir" -j2 --target sscc_tests >>"$dir.log" 2>&1
+    >"$dir/build.log" 2>&1 && cmake --build "$dir" -j2 --target sscc_tests >>"$dir/build.log" 2>&1
 }
 
 # Runs a spec; 0 when its tests pass. A run that does not end in 10 minutes counts as failing.
-run() { timeout 600 "build-mutants/$1/bin/sscc_tests" "$2" >"build-mutants/$1.tests.log" 2>&1; }
+run() { timeout 600 "build-mutant-$1/bin/sscc_tests" "$2" >"build-mutant-$1/tests.log" 2>&1; }
 
-mkdir -p build-mutants
 start=$SECONDS
 mapfile -t specs < <(for name in "${order[@]}"; do echo "${guard[$name]}"; done | sort -u)
-if ! build unmutated ""; then echo "mutants: the unmutated build failed (build-mutants/unmutated.log)" >&2; exit 2; fi
+if ! build unmutated ""; then echo "mutants: the unmutated build failed (build-mutant-unmutated/build.log)" >&2; exit 2; fi
 for spec in "${specs[@]}"; do
   if ! run unmutated "$spec"; then
-    echo "mutants: $spec fails without a mutant (build-mutants/unmutated.tests.log)" >&2
+    echo "mutants: $spec fails without a mutant (build-mutant-unmutated/tests.log)" >&2
     exit 2
   fi
 done

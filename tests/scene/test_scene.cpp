@@ -207,8 +207,8 @@ TEST_CASE("scene: per-object switches, bad input, concurrent steps", "[scene]") 
   scene.add_object(f.ccd);
   scene.add_object(f.ccd, {false, true});
   scene.add_object(f.ccd, {true, false});
-  std::mt19937_64 rng(5);
-  const auto steps = random_steps(rng, 1.2, 0.75);
+  std::mt19937_64 rng(7);  // a step where all three objects fold onto themselves
+  const auto steps = random_steps(rng, 1.2, 0.6);
   const sscc::SceneReport r = scene.step(steps);
   CHECK(r.objects[1].outcome == sscc::SelfTestOutcome::kSwitchedOff);
   CHECK(r.stats.object_pairs == 1);
