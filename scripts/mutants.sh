@@ -4,10 +4,10 @@
 # Each mutant is a compile definition, SSCC_MUTANT_<NAME>, that breaks one guarantee at one
 # spot of the library (grep -rn SSCC_MUTANT_ src ccd_kernels include); normal builds never
 # define one, so the hooks compile to nothing. Each is built into build-mutant-<name>/ (the
-# test target only) and run against the tests that guard its guarantee. The build
-# directories sit beside build/, at its depth: ccache (base_dir = /work) hashes paths
-# relative to the build directory, so files the definition does not change come from the
-# cache, built there or by an earlier mutant. A mutant is KILLED when those tests fail,
+# test target only) and run against the tests that guard its guarantee. The definition is
+# given only to the files that hold or include the hook (CMake's SSCC_MUTANT_SOURCES), and
+# the build directories sit beside build/, at its depth (ccache, with base_dir = /work,
+# hashes paths relative to the build directory): every other file comes from ccache. A mutant is KILLED when those tests fail,
 # SURVIVED when they pass. The same tests must first pass on an unmutated build.
 #
 #   bash scripts/mutants.sh            # every mutant
@@ -39,12 +39,33 @@ for name in "${order[@]}"; do
   fi
 done
 
-# Builds the test target into build-mutant-<name>/ with the given CMAKE_CXX_FLAGS (log: build.log there).
+# The translation units that hold a mutant's hook or include the file that does, read from
+# the dependency files of the unmutated build (paths there are relative to the directory the
+# compiler ran in, the one above CMakeFiles/).
+units_of() {
+  local hooks depfile hook
+  mapfile -t hooks < <(grep -rl "SSCC_MUTANT_$1\b" src ccd_kernels include)
+  find build-mutant-unmutated -name '*.o.d' | while read -r depfile; do
+    for hook in "${hooks[@]}"; do
+      if grep -q "/$(basename "$hook")\b" "$depfile"; then
+        # The source is the first name after "target:" (on the first or the second line).
+        realpath "${depfile%%/CMakeFiles/*}/$(head -2 "$depfile" | tr -d '\\' | tr '\n' ' ' | awk '{print $2}')"
+        break
+      fi
+    done
+  done | sort -u | paste -sd ';'
+}
+
+# Builds the test target into build-mutant-<dir>/ (log: build.log there), with mutant
+# <name>'s definition in the files that see its hook ("" for none).
 build() {
-  local dir=build-mutant-$1 flags=$2
+  local dir=build-mutant-$1 name=$2 sources=""
+  if [ -n "$name" ]; then sources=$(units_of "$name"); fi
   mkdir -p "$dir"
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_FLAGS="$flags" \
-    >"$dir/build.log" 2>&1 && cmake --build "$dir" -j2 --target sscc_tests >>"$dir/build.log" 2>&1
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_FLAGS="" \
+    -DSSCC_MUTANT="$name" \
+    -DSSCC_MUTANT_SOURCES="$sources" >"$dir/build.log" 2>&1 &&
+    cmake --build "$dir" -j2 --target sscc_tests >>"$dir/build.log" 2>&1
 }
 
 # Runs a spec; 0 when its tests pass. A run that does not end in 10 minutes counts as failing.
@@ -65,7 +86,7 @@ survived=0
 for name in "${order[@]}"; do
   begin=$SECONDS
   dir=$(echo "$name" | tr 'A-Z_' 'a-z-')
-  if ! build "$dir" "-DSSCC_MUTANT_$name"; then
+  if ! build "$dir" "$name"; then
     result="BUILD-FAILED"
     survived=$((survived + 1))
   elif run "$dir" "${guard[$name]}"; then
