@@ -39,7 +39,7 @@ TEST_CASE("moving frame: a minimum separation reached exactly at the end is kept
   std::mt19937_64 rng(30);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   int tested = 0;
-  for (int i = 0; i < 20000; ++i) {
+  for (int i = 0; i < 4000; ++i) {
     const double s = 1000.0 * uniform(rng);
     const double top = s + std::ldexp(uniform(rng), -40);
     const double d = top - s;  // exact: top and s are within a factor 2 of each other
@@ -53,5 +53,5 @@ TEST_CASE("moving frame: a minimum separation reached exactly at the end is kept
     REQUIRE(sscc::ccd::vertex_face_ccd(v0, f0, f1, f2, v1, g0, g1, g2, options).hit);
     ++tested;
   }
-  CHECK(tested > 9000);
+  CHECK(tested > 1800);
 }

@@ -162,12 +162,12 @@ TEST_CASE("self-CCD with a minimum separation: every feature within reach, once"
   const sscc::SelfCcd detector(bvh);
   std::mt19937_64 rng(8);
   int near = 0;
-  for (int step = 0; step < 3; ++step) {
+  for (int step = 0; step < 2; ++step) {
     const Eigen::VectorXd q0 = random_q(rng, 9, 0.6);
     const Eigen::VectorXd q1 = q0 + random_q(rng, 9, 0.6);
     sscc::SelfCcdOptions options;
     options.use_certificates = false;
-    options.kernel.minimum_separation = 0.05;
+    options.kernel.minimum_separation = 0.03;
     const BruteForce expected =
         brute_force(mesh, model.deformed_positions(q0), model.deformed_positions(q1), options.kernel);
     require_same(detector.query(q0, q1, options), expected);
