@@ -54,7 +54,7 @@ void check_object_frame_rotation(const ObjectStep& s, double bound, int object) 
     throw std::invalid_argument("Scene::step: object " + std::to_string(object) + ": its frame turns by " +
                                 std::to_string(angle) + " rad over the step, more than max_object_frame_rotation (" +
                                 std::to_string(bound) +
-                                " rad) for a self test in the object's frame; split the step, or set "
+                                " rad) for a self test in the object's frame; take smaller steps, or set "
                                 "SceneObjectOptions::self_motion = SelfMotion::kWorldLinear");
   }
 }

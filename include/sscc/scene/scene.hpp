@@ -25,12 +25,12 @@
 // certificates included. When the frame turns by theta, a world-linear vertex at distance
 // rho from the rotation axis cuts the chord of its arc, up to rho (1 - cos(theta / 2)) inside
 // the rigid path: a half-turn collapses a sphere onto the axis, which the object-frame test
-// never sees. So: a simulator that moves vertices on straight lines in world space (most do,
-// and the inter-object test assumes it) wants kWorldLinear, or steps that turn little; one
+// never sees. So: a simulator that moves vertices on straight lines in world space (as the
+// inter-object test assumes) wants kWorldLinear, or steps that turn little; one
 // that moves each object rigidly along its frame's interpolation wants kObjectFrame with any
 // rotation (raise SceneOptions::max_object_frame_rotation). The object-frame test refuses a
 // step whose frame turns by more than max_object_frame_rotation (kMaxObjectFrameRotation by
-// default): split such steps, or choose kWorldLinear, which costs a traversal whenever the
+// default): take smaller steps, or choose kWorldLinear, which costs a traversal whenever the
 // frame turns (the certificates bound the object-frame motion only).
 //
 // Skipping what a step does not need: an object that did not move (q0 == q1 and equal
