@@ -129,6 +129,9 @@ CcdResult decide(const FourPointMotion& motion, const CcdOptions& options) {
     return result;
   }
   if (options.minimum_separation > 0.0) {
+#ifdef SSCC_MUTANT_SEPARATION_3D
+    return separation_search(motion, 3.0 * options.minimum_separation, tolerance);
+#endif
     return separation_search(motion, options.minimum_separation, tolerance);
   }
   if (boxes.max_magnitude() <= filter::kFilterMaxMagnitude) {

@@ -148,23 +148,33 @@ void bind_scene(py::module_& m) {
       .def(py::init<>(), "An empty scene.")
       .def(
           "add_object",
-          [](Scene& scene, const SelfCcd& detector, bool self_collision, bool inter_object) {
+          [](Scene& scene, const SelfCcd& detector, bool self_collision, bool inter_object,
+             const std::string& self_motion) {
             SceneObjectOptions options;
             options.self_collision = self_collision;
             options.inter_object = inter_object;
+            if (self_motion == "world_linear") {
+              options.self_motion = SelfMotion::kWorldLinear;
+            } else if (self_motion != "object_frame") {
+              throw py::value_error("self_motion must be 'object_frame' or 'world_linear', got '" + self_motion + "'");
+            }
             return scene.add_object(detector, options);
           },
           py::arg("detector"), py::kw_only(), py::arg("self_collision") = true, py::arg("inter_object") = true,
-          py::keep_alive<1, 2>(),
+          py::arg("self_motion") = "object_frame", py::keep_alive<1, 2>(),
           "Adds an instance of a detector (kept alive as long as the scene) and returns its index. "
-          "self_collision / inter_object switch its tests off.")
+          "self_collision / inter_object switch its tests off. self_motion: the vertex motion of its self "
+          "test, 'object_frame' (linear in q in the object's frame, which moves rigidly; steps turning the "
+          "frame by more than max_object_frame_rotation are refused) or 'world_linear' (straight lines in "
+          "world space, as between objects).")
       .def_property_readonly("object_count", &Scene::object_count, "Number of objects.")
       .def("__repr__",
            [](const Scene& scene) { return "<sscc.Scene of " + std::to_string(scene.object_count()) + " objects>"; })
       .def(
           "step",
           [](const Scene& scene, py::object q0, py::object q1, py::object frames0, py::object frames1,
-             const std::string& mode, bool use_certificates, double toi_tolerance, double minimum_separation) {
+             const std::string& mode, bool use_certificates, double toi_tolerance, double minimum_separation,
+             double max_object_frame_rotation) {
             const auto objects = static_cast<std::size_t>(scene.object_count());
             const auto start = per_object(q0, "q0", objects);
             const auto end = per_object(q1, "q1", objects);
@@ -182,16 +192,19 @@ void bind_scene(py::module_& m) {
             options.mode = parse_mode(mode);
             options.use_certificates = use_certificates;
             options.kernel = kernel_options(toi_tolerance, minimum_separation);
+            options.max_object_frame_rotation = max_object_frame_rotation;
             py::gil_scoped_release release;
             return scene.step(steps, options);
           },
           py::arg("q0"), py::arg("q1"), py::arg("frames0") = py::none(), py::arg("frames1") = py::none(), py::kw_only(),
           py::arg("mode") = "all", py::arg("use_certificates") = true,
           py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
+          py::arg("max_object_frame_rotation") = kMaxObjectFrameRotation,
           "One time step. q0, q1: one coordinate vector per object (a list, or an (objects, r) array). "
           "frames0, frames1: None (identity frames) or one frame per object, each None, a 4x4 "
           "homogeneous matrix or a pair (R, t). mode and the kernel options as in SelfCcd.query. Raises "
-          "ValueError for a wrong count, q of the wrong size or not finite, or a frame that is not rigid.");
+          "ValueError for a wrong count, q of the wrong size or not finite, a frame that is not rigid, or "
+          "an object-frame self test whose frame turns by more than max_object_frame_rotation (radians).");
 }
 
 }  // namespace sscc::python

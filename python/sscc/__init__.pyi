@@ -174,7 +174,14 @@ class SceneReport:
 
 class Scene:
     def __init__(self) -> None: ...
-    def add_object(self, detector: SelfCcd, *, self_collision: bool = True, inter_object: bool = True) -> int: ...
+    def add_object(
+        self,
+        detector: SelfCcd,
+        *,
+        self_collision: bool = True,
+        inter_object: bool = True,
+        self_motion: Literal["object_frame", "world_linear"] = "object_frame",
+    ) -> int: ...
     @property
     def object_count(self) -> int: ...
     def step(
@@ -188,6 +195,7 @@ class Scene:
         use_certificates: bool = True,
         toi_tolerance: float = ...,
         minimum_separation: float = 0.0,
+        max_object_frame_rotation: float = ...,
     ) -> SceneReport: ...
 
 def vertex_face_ccd(

@@ -123,3 +123,24 @@ def test_scene_bad_input(detector):
     sheared[0, 1] = 0.5
     with pytest.raises(ValueError, match="rigid|rotation|orthonormal"):
         scene.step([q], [q], [(sheared, np.zeros(3))])
+
+
+def test_scene_self_motion_half_turn(detector):
+    """A half-turn with q fixed: refused for the object-frame self test, certified when told
+    the object turns rigidly, and the world-linear paths collapse the mesh onto the axis."""
+    q = np.zeros(MODES)
+    half_turn = (np.diag([-1.0, -1.0, 1.0]), np.zeros(3))
+    still = (np.eye(3), np.zeros(3))
+    object_frame = sscc.Scene()
+    object_frame.add_object(detector)
+    with pytest.raises(ValueError, match="max_object_frame_rotation"):
+        object_frame.step([q], [q], [still], [half_turn])
+    rigid = object_frame.step([q], [q], [still], [half_turn], max_object_frame_rotation=np.inf)
+    assert not rigid.collided
+    world = sscc.Scene()
+    world.add_object(detector, self_motion="world_linear")
+    collapsed = world.step([q], [q], [still], [half_turn])
+    assert collapsed.collided
+    assert collapsed.earliest_toi <= 0.5
+    with pytest.raises(ValueError, match="self_motion"):
+        world.add_object(detector, self_motion="rigid")

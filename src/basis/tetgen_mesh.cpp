@@ -1,7 +1,3 @@
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "basis/child_process.hpp"
 #include "sscc/basis/volume_mesh.hpp"
 #include "sscc/query/self_ccd.hpp"
 
@@ -88,79 +85,29 @@ TetgenOutput run_tetgen(const TriangleMesh& mesh, const std::string& switches_in
   return result;
 }
 
-bool write_all(int fd, const void* data, std::size_t bytes) {
-  const char* p = static_cast<const char*>(data);
-  while (bytes > 0) {
-    const ssize_t n = ::write(fd, p, bytes);
-    if (n <= 0) return false;
-    p += n;
-    bytes -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 /// TetGen in a child process: on some invalid inputs it crashes instead of reporting (it
 /// frees its memory twice after finding self-intersections, seen with TetGen 1.5.0), and a
-/// crash there must not take the caller down. The child sends back an error message or the
-/// flattened result through a pipe.
+/// crash there must not take the caller down. The child hands back the flattened result.
 TetgenOutput run_tetgen_isolated(const TriangleMesh& mesh, const std::string& switches) {
-  int fds[2];
-  if (::pipe(fds) != 0) throw std::runtime_error("TetGen: cannot create a pipe");
-  const pid_t child = ::fork();
-  if (child < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    throw std::runtime_error("TetGen: cannot fork");
+  const std::string bytes = detail::run_in_child("TetGen (on a degenerate or self-intersecting surface?)", [&] {
+    const TetgenOutput out = run_tetgen(mesh, switches);
+    const std::uint64_t sizes[2] = {out.points.size(), out.tetrahedra.size()};
+    std::string flat(reinterpret_cast<const char*>(sizes), sizeof sizes);
+    flat.append(reinterpret_cast<const char*>(out.points.data()), out.points.size() * sizeof(double));
+    flat.append(reinterpret_cast<const char*>(out.tetrahedra.data()), out.tetrahedra.size() * sizeof(int));
+    return flat;
+  });
+  std::uint64_t sizes[2] = {0, 0};
+  if (bytes.size() < sizeof sizes) throw std::runtime_error("TetGen's result was cut short");
+  std::memcpy(sizes, bytes.data(), sizeof sizes);
+  if (bytes.size() != sizeof sizes + sizes[0] * sizeof(double) + sizes[1] * sizeof(int)) {
+    throw std::runtime_error("TetGen's result was cut short");
   }
-  if (child == 0) {
-    ::close(fds[0]);
-    int status = 0;
-    try {
-      const TetgenOutput out = run_tetgen(mesh, switches);
-      const std::uint64_t sizes[3] = {0, out.points.size(), out.tetrahedra.size()};
-      status = write_all(fds[1], sizes, sizeof sizes) &&
-                       write_all(fds[1], out.points.data(), out.points.size() * sizeof(double)) &&
-                       write_all(fds[1], out.tetrahedra.data(), out.tetrahedra.size() * sizeof(int))
-                   ? 0
-                   : 3;
-    } catch (const std::exception& e) {
-      const std::string message = e.what();
-      const std::uint64_t sizes[3] = {message.size(), 0, 0};
-      status = write_all(fds[1], sizes, sizeof sizes) && write_all(fds[1], message.data(), message.size()) ? 0 : 3;
-    }
-    ::close(fds[1]);
-    ::_exit(status);
-  }
-  ::close(fds[1]);
-  std::string received;
-  char buffer[1 << 16];
-  for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) != 0;) {
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    received.append(buffer, static_cast<std::size_t>(n));
-  }
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFSIGNALED(status)) {
-    throw std::runtime_error("TetGen crashed on this surface (signal " + std::to_string(WTERMSIG(status)) +
-                             "): degenerate or self-intersecting triangles?");
-  }
-  std::uint64_t sizes[3] = {0, 0, 0};
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || received.size() < sizeof sizes) {
-    throw std::runtime_error("TetGen failed without a result");
-  }
-  std::memcpy(sizes, received.data(), sizeof sizes);
-  const std::size_t expected = sizeof sizes + sizes[0] + sizes[1] * sizeof(double) + sizes[2] * sizeof(int);
-  if (received.size() != expected) throw std::runtime_error("TetGen's result was cut short");
-  if (sizes[0] > 0) throw std::runtime_error(received.substr(sizeof sizes, sizes[0]));
   TetgenOutput out;
-  out.points.resize(sizes[1]);
-  out.tetrahedra.resize(sizes[2]);
-  std::memcpy(out.points.data(), received.data() + sizeof sizes, sizes[1] * sizeof(double));
-  std::memcpy(out.tetrahedra.data(), received.data() + sizeof sizes + sizes[1] * sizeof(double),
-              sizes[2] * sizeof(int));
+  out.points.resize(sizes[0]);
+  out.tetrahedra.resize(sizes[1]);
+  std::memcpy(out.points.data(), bytes.data() + sizeof sizes, sizes[0] * sizeof(double));
+  std::memcpy(out.tetrahedra.data(), bytes.data() + sizeof sizes + sizes[0] * sizeof(double), sizes[1] * sizeof(int));
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "certificates/box_box_bound.hpp"
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/certificates/triangle_pair_bound.hpp"
@@ -12,35 +13,14 @@ namespace sscc {
 
 namespace {
 
+using detail::box_box_radius;
+
 // A sibling pair's radius is resolved up to this multiple of the smallest radius known in
 // its parent at the time (and R_global), on its own rather than lowered to the parent's
 // minimum: a step a little above the parent's radius is then still certified for most of
 // its sibling pairs. Larger: more precomputation for pairs that rarely matter; 1 gives the
 // paper's running minimum (sibling radii close to the parent's).
 constexpr double kSiblingReach = 2.0;
-
-/// Relative shrink of the box-box radius: its gap, rates and quotient each round by a few
-/// units of 2^-53 (relative), far below this, so the shrunk radius never exceeds the exact
-/// one. Smaller (towards 1e-15) risks a radius rounded above the true one, which could
-/// certify a pair that touches; larger only culls a little less.
-constexpr double kBoxBoxRoundingShrink = 1e-9;
-
-/// Smallest ||q_hat|| at which the subspace boxes of nodes a and b can meet: along axis D
-/// the centres' gap g_D closes at rate at most ||(C_a - C_b)_D||_2 and the half extents grow
-/// at rate_a,D + rate_b,D per unit ||q_hat|| (Cauchy-Schwarz), and all three axes must close.
-double box_box_radius(const SubspaceBvh& bvh, int a, int b) {
-  const SubspaceBvh::SubspaceBound x = bvh.subspace_bound(a);
-  const SubspaceBvh::SubspaceBound y = bvh.subspace_bound(b);
-  double radius = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double gap = std::fabs(x.centre[k] - y.centre[k]) - x.half[k] - y.half[k];
-    if (!(gap > 0.0)) continue;
-    const double rate = (x.mean_modes.row(k) - y.mean_modes.row(k)).norm() + x.rate[k] + y.rate[k];
-    radius = std::max(radius, rate > 0.0 ? gap / rate : INFINITY);
-  }
-  // The bound only culls: shrunk so that its own rounding never culls a closer pair.
-  return radius * (1.0 - kBoxBoxRoundingShrink);
-}
 
 /// The minimum radius over the pairs seen so far, as a lower bound and as the smallest
 /// contact configuration found (an upper bound). Lower bounds accurate to epsilon relative
@@ -295,6 +275,11 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
     }
     if (progress) progress(levels - level, levels);
   }
+#ifdef SSCC_MUTANT_INFLATE_RADII
+  for (int n = 1; n < static_cast<int>(nodes.size()); ++n) certificates.node_radius_[n] *= 1.1;
+  for (auto& radii : certificates.sibling_radius_)
+    for (double& r : radii) r *= 1.1;
+#endif
   PrecomputeStats& stats = certificates.stats_;
   stats.node_pairs_visited = totals.node_pairs_visited;
   stats.node_pairs_culled = totals.node_pairs_culled;

@@ -52,6 +52,9 @@ struct PositionRounding {
 };
 
 PositionRounding rounding_of_positions(const ModalTriangle& a, const ModalTriangle& b) {
+#ifdef SSCC_MUTANT_NO_POSITION_ROUNDING
+  return {};
+#endif
   const double c = (static_cast<double>(a.modes[0].cols()) + 2.0) * std::numeric_limits<double>::epsilon();
   double coordinate = 0.0, row = 0.0;
   for (const ModalTriangle* t : {&a, &b}) {
@@ -228,6 +231,9 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
       solver.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() * solver.eigenvectors().transpose() * d;
   Evaluation e;
   e.lower = dual_bound(frame, pa, pb, corners_a, corners_b, constant_mode_multiplier);
+#ifdef SSCC_MUTANT_NO_CONSTANT_MODE_MULTIPLIER
+  e.lower = 0.0;
+#endif
   // The paper's R_hi with the true modes at those points: the least-norm solution of
   // (U(Xb) - U(Xa)) q_hat = d through the eigen-decomposition of its Gram matrix (a
   // component of d in its null space means no solution).

@@ -26,13 +26,44 @@ void check_frame(const RigidFrame& frame, int object) {
   }
   const double deviation =
       (frame.rotation.transpose() * frame.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+#ifdef SSCC_MUTANT_ACCEPT_REFLECTIONS
+  if (!(deviation <= kRotationTolerance)) {
+#else
   if (!(deviation <= kRotationTolerance) || !(frame.rotation.determinant() > 0.0)) {
+#endif
     throw std::invalid_argument(where + "the frame's rotation is not a rotation (R^T R - I reaches " +
                                 std::to_string(deviation) + ", or det R <= 0)");
   }
 }
 
 bool is_static(const ObjectStep& s) { return s.q0 == s.q1 && s.frame0 == s.frame1; }
+
+/// The angle (radians, in [0, pi]) of the rotation from the step's first frame to its last:
+/// atan2 of the sine (half the skew part's norm) and the cosine ((trace - 1) / 2), accurate
+/// at every angle.
+double step_rotation(const ObjectStep& s) {
+  const Eigen::Matrix3d relative = s.frame1.rotation * s.frame0.rotation.transpose();
+  const Eigen::Vector3d skew(relative(2, 1) - relative(1, 2), relative(0, 2) - relative(2, 0),
+                             relative(1, 0) - relative(0, 1));
+  return std::atan2(0.5 * skew.norm(), 0.5 * (relative.trace() - 1.0));
+}
+
+void check_object_frame_rotation(const ObjectStep& s, double bound, int object) {
+  const double angle = step_rotation(s);
+  if (angle > bound) {
+    throw std::invalid_argument("Scene::step: object " + std::to_string(object) + ": its frame turns by " +
+                                std::to_string(angle) + " rad over the step, more than max_object_frame_rotation (" +
+                                std::to_string(bound) +
+                                " rad) for a self test in the object's frame; take smaller steps, or set "
+                                "SceneObjectOptions::self_motion = SelfMotion::kWorldLinear");
+  }
+}
+
+/// Whether the object's self test runs on world-space straight-line paths, which differ from
+/// the object-frame motion (up to a translation linear in t) only when the frame turns.
+bool self_test_in_world(const SceneObjectOptions& options, const ObjectStep& s) {
+  return options.self_motion == SelfMotion::kWorldLinear && s.frame0.rotation != s.frame1.rotation;
+}
 
 /// The earliest time of impact over the objects' self contacts and the contacts between
 /// objects (1 when nothing collided).
@@ -128,6 +159,19 @@ class Motions {
 
 namespace {
 
+/// The traditional self query on the world-space straight-line paths of the object's
+/// vertices, whose world positions are computed as between objects.
+SelfCcdReport world_linear_self_test(const SelfCcd& detector, const ObjectStep& s, const SelfCcdOptions& options) {
+  detail::ObjectMotion motion(detector.bvh(), s);
+  const int vertices = detector.bvh().model().mesh().vertex_count();
+  std::vector<Eigen::Vector3d> x0(vertices), x1(vertices);
+  for (int v = 0; v < vertices; ++v) {
+    x0[v] = motion.start(v);
+    x1[v] = motion.end(v);
+  }
+  return detector.query_positions(x0, x1, options);
+}
+
 /// What one object pair's traversal found.
 struct PairOutcome {
   std::vector<InterObjectFeature> features;
@@ -150,6 +194,12 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
   for (const Object& o : objects_) detectors.push_back(&o.detector);
   Motions motions(detectors, steps);
   const int n = object_count();
+  for (int i = 0; i < n; ++i) {
+    const SceneObjectOptions& o = objects_[i].options;
+    if (o.self_collision && o.self_motion == SelfMotion::kObjectFrame) {
+      check_object_frame_rotation(steps[i], options.max_object_frame_rotation, i);
+    }
+  }
   SelfCcdOptions self_options = options;
   self_options.threads = 1;
   const bool any_hit = options.mode == SelfCcdMode::kAnyHit;
@@ -164,6 +214,8 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
       self[i].outcome = SelfTestOutcome::kSwitchedOff;
     } else if (is_static(steps[i])) {  // nothing can come into contact
       self[i].outcome = SelfTestOutcome::kStatic;
+    } else if (self_test_in_world(objects_[i].options, steps[i])) {  // no certificate covers it
+      tasks.push_back({i, -1});
     } else if (objects_[i].detector.root_certifies(steps[i].q0, steps[i].q1, self_options)) {
       self[i].report = objects_[i].detector.query(steps[i].q0, steps[i].q1, self_options);
       self[i].outcome = SelfTestOutcome::kCertified;
@@ -211,8 +263,13 @@ SceneReport Scene::step(const std::vector<ObjectStep>& steps, const SceneOptions
       ObjectSelfResult& result = self[task.object_a];
       SelfCcdOptions traversal = self_options;
       traversal.threads = query_threads;
-      result.report =
-          objects_[task.object_a].detector.query(steps[task.object_a].q0, steps[task.object_a].q1, traversal);
+      const Object& object = objects_[task.object_a];
+      const ObjectStep& s = steps[task.object_a];
+      if (self_test_in_world(object.options, s)) {
+        result.report = world_linear_self_test(object.detector, s, traversal);
+      } else {
+        result.report = object.detector.query(s.q0, s.q1, traversal);
+      }
       result.outcome = result.report.stats.root_certified ? SelfTestOutcome::kCertified : SelfTestOutcome::kTraversed;
       hit = result.report.collided();
     } else {

@@ -2,13 +2,12 @@
 
 #include "agreement.hpp"
 #include "query_set.hpp"
+#include "support/shared_data.hpp"
 
 TEST_CASE("the public handcrafted query set: no false negatives, no false positives", "[kernels][query-set]") {
+  const auto beside = std::filesystem::path(SSCC_SOURCE_DIR) / ".." / "shared" / "data" / "ccd-sample-queries";
+  if (!sscc::test::shared_data_present(beside, "the public CCD query set")) return;
   const std::string path = sscc::validation::default_query_set_path(SSCC_SOURCE_DIR);
-  if (path.empty()) {
-    WARN("skipped: ../shared/data/ccd-sample-queries is not beside the repository");
-    return;
-  }
   int queries = 0;
   for (const auto& file : sscc::validation::read_query_set(path)) {
     for (const auto& labelled : file.queries) {

@@ -1,27 +1,68 @@
 #include <catch2/catch.hpp>
 
 #include <random>
+#include <vector>
 
-#include "sscc/ccd/exact/reference.hpp"
+#include <gmpxx.h>
+
 #include "sscc/ccd/kernels.hpp"
 
 using V = Eigen::Vector3d;
 
 namespace {
 
-/// Independent reference: some edge of one triangle meets the other, decided by the
-/// exact oracle with the edge as the path of a moving vertex.
+/// Independent reference, sharing nothing with the kernel's edge-against-triangle
+/// decomposition: the closed triangles meet iff some point is a convex combination of the
+/// vertices of both, i.e. the linear program
+///   sum_i alpha_i a_i - sum_j beta_j b_j = 0, sum_i alpha_i = 1, sum_j beta_j = 1, alpha, beta >= 0
+/// is feasible. A feasible program has a basic feasible solution, supported on linearly
+/// independent columns, so every set of independent columns is solved exactly (rational
+/// Gaussian elimination) and its solution's signs checked.
 bool reference_intersect(const std::array<V, 3>& a, const std::array<V, 3>& b) {
-  auto q = [](const V& p) { return sscc::exact::to_rational(p[0], p[1], p[2]); };
-  for (int side = 0; side < 2; ++side) {
-    const auto& e = side == 0 ? a : b;
-    const auto& t = side == 0 ? b : a;
-    for (int i = 0; i < 3; ++i) {
-      if (sscc::exact::reference_vertex_face(q(e[i]), q(t[0]), q(t[1]), q(t[2]), q(e[(i + 1) % 3]), q(t[0]), q(t[1]),
-                                             q(t[2]))) {
-        return true;
+  std::array<std::array<mpq_class, 5>, 6> column;
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      column[i][k] = mpq_class(a[i][k]);
+      column[3 + i][k] = -mpq_class(b[i][k]);
+    }
+    column[i][3] = 1;
+    column[i][4] = 0;
+    column[3 + i][3] = 0;
+    column[3 + i][4] = 1;
+  }
+  for (int support = 1; support < 64; ++support) {
+    std::vector<int> used;
+    for (int c = 0; c < 6; ++c) {
+      if (support & (1 << c)) used.push_back(c);
+    }
+    const int k = static_cast<int>(used.size());
+    // Rows: 5 equations over the used columns, right-hand side (0, 0, 0, 1, 1).
+    std::vector<std::vector<mpq_class>> m(5, std::vector<mpq_class>(k + 1));
+    for (int r = 0; r < 5; ++r) {
+      for (int c = 0; c < k; ++c) m[r][c] = column[used[c]][r];
+      m[r][k] = r >= 3 ? 1 : 0;
+    }
+    bool independent = true;
+    for (int c = 0; c < k && independent; ++c) {
+      int pivot = c;
+      while (pivot < 5 && m[pivot][c] == 0) ++pivot;
+      if (pivot == 5) {
+        independent = false;
+        break;
+      }
+      std::swap(m[c], m[pivot]);
+      for (int r = 0; r < 5; ++r) {
+        if (r == c || m[r][c] == 0) continue;
+        const mpq_class factor = m[r][c] / m[c][c];
+        for (int j = c; j <= k; ++j) m[r][j] -= factor * m[c][j];
       }
     }
+    if (!independent) continue;
+    bool consistent = true;
+    for (int r = k; r < 5; ++r) consistent = consistent && m[r][k] == 0;
+    bool non_negative = true;
+    for (int c = 0; c < k; ++c) non_negative = non_negative && m[c][k] / m[c][c] >= 0;
+    if (consistent && non_negative) return true;
   }
   return false;
 }

@@ -33,7 +33,8 @@ struct StackedTriangles {
 
 }  // namespace
 
-TEST_CASE("certificates: contacts through rounding far from the origin are not certified away", "[certificates]") {
+TEST_CASE("certificates: contacts through rounding far from the origin are not certified away",
+          "[certificates][rounding]") {
   for (double z : {0.0, 1024.0, 131072.0, 1099511627776.0}) {
     INFO("z = " << z);
     const StackedTriangles s(z);

@@ -177,7 +177,8 @@ TEST_CASE("1D bound: its rounding never lifts it above the true radius (parallel
   }
 }
 
-TEST_CASE("triangle-pair radius: the Gram rounding pad covers the rounding of r-term dot products", "[certificates]") {
+TEST_CASE("triangle-pair radius: the Gram rounding pad covers the rounding of r-term dot products",
+          "[certificates][rounding]") {
   const double u = std::numeric_limits<double>::epsilon() / 2;  // unit roundoff
   // The standard bound on an r-term dot product's rounding (Higham, Theorem 3.5) is
   // gamma_r = r u / (1 - r u) times the product of the norms; the pad must exceed it for every

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "sscc/mesh/mesh_io.hpp"
+#include "support/shared_data.hpp"
 
 namespace fs = std::filesystem;
 
@@ -195,10 +196,7 @@ TEST_CASE("hostile files end in an error, not a crash or a hang", "[mesh]") {
 
 TEST_CASE("the real meshes beside the repository load", "[mesh]") {
   const fs::path meshes = fs::path(SSCC_SOURCE_DIR) / ".." / "shared" / "data" / "meshes";
-  if (!fs::is_directory(meshes)) {
-    WARN("skipped: ../shared/data/meshes is not beside the repository");
-    return;
-  }
+  if (!sscc::test::shared_data_present(meshes, "the real meshes")) return;
   sscc::MeshReadReport report;
   const sscc::TriangleMesh lion = sscc::read_mesh((meshes / "lion.off").string(), &report);
   CHECK(lion.vertex_count() == 7529);

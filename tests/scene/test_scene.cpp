@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <thread>
 #include <tuple>
@@ -77,8 +78,10 @@ std::vector<sscc::InterObjectContact> brute_force(const sscc::SubspaceModel& mod
   return contacts;
 }
 
-/// Three deforming, rotating spheres, each moving a fraction `closing` of the way to a common point.
-std::vector<sscc::ObjectStep> random_steps(std::mt19937_64& rng, double amplitude, double closing) {
+/// Three deforming, rotating spheres, each moving a fraction `closing` of the way to a common
+/// point and turning by up to `turn` radians. Turns past kMaxObjectFrameRotation need
+/// SceneOptions::max_object_frame_rotation raised.
+std::vector<sscc::ObjectStep> random_steps(std::mt19937_64& rng, double amplitude, double closing, double turn = 0.2) {
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   std::vector<sscc::ObjectStep> steps(3);
   const Eigen::Vector3d centres[3] = {{0, 0, 0}, {3.6, 0.45, 0}, {1.65, 3.45, 0.3}};
@@ -87,8 +90,9 @@ std::vector<sscc::ObjectStep> random_steps(std::mt19937_64& rng, double amplitud
     const Eigen::Vector3d axis(uniform(rng), uniform(rng), uniform(rng) + 2.0);
     steps[i].q0 = random_q(rng, amplitude);
     steps[i].q1 = steps[i].q0 + random_q(rng, amplitude);
-    steps[i].frame0 = frame(axis, uniform(rng), centres[i]);
-    steps[i].frame1 = frame(axis, uniform(rng), centres[i] + closing * (middle - centres[i]));
+    const double angle = uniform(rng);
+    steps[i].frame0 = frame(axis, angle, centres[i]);
+    steps[i].frame1 = frame(axis, angle + turn * uniform(rng), centres[i] + closing * (middle - centres[i]));
   }
   return steps;
 }
@@ -101,10 +105,14 @@ TEST_CASE("scene: inter-object contacts equal exhaustive and brute-force testing
   for (int i = 0; i < 3; ++i) scene.add_object(f.ccd);
   std::mt19937_64 rng(7);
   int colliding = 0, apart = 0;
+  // Turns of up to 2 radians: world paths far from rigid motion between objects; the self
+  // tests, in the objects' frames, are told to accept them.
+  sscc::SceneOptions wide;
+  wide.max_object_frame_rotation = INFINITY;
   for (double closing : {0.0, 0.3, 0.45, 0.6}) {
     for (int trial = 0; trial < 3; ++trial) {
-      const auto steps = random_steps(rng, 0.3, closing);
-      const sscc::SceneReport r = scene.step(steps);
+      const auto steps = random_steps(rng, 0.3, closing, 2.0);
+      const sscc::SceneReport r = scene.step(steps, wide);
       INFO("closing " << closing << " trial " << trial);
       CHECK(r.contacts == scene.inter_object_exhaustive(steps));
       const auto expected = brute_force(f.model, steps);
@@ -199,12 +207,28 @@ TEST_CASE("scene: per-object switches, bad input, concurrent steps", "[scene]") 
   scene.add_object(f.ccd);
   scene.add_object(f.ccd, {false, true});
   scene.add_object(f.ccd, {true, false});
-  std::mt19937_64 rng(5);
-  const auto steps = random_steps(rng, 0.3, 0.6);
+  std::mt19937_64 rng(7);  // a step where all three objects fold onto themselves
+  const auto steps = random_steps(rng, 1.2, 0.6);
   const sscc::SceneReport r = scene.step(steps);
   CHECK(r.objects[1].outcome == sscc::SelfTestOutcome::kSwitchedOff);
   CHECK(r.stats.object_pairs == 1);
-  for (const auto& c : r.contacts) CHECK((c.object_first == 0 && c.object_second == 1));
+  // With every switch on, the same step has more: object 1's self contacts and contacts with
+  // object 2. The switches remove exactly those.
+  sscc::Scene all_on;
+  for (int i = 0; i < 3; ++i) all_on.add_object(f.ccd);
+  const sscc::SceneReport full = all_on.step(steps);
+  REQUIRE(full.objects[1].report.collided());
+  std::vector<sscc::InterObjectContact> between_0_and_1;
+  for (const auto& c : full.contacts) {
+    if (c.object_second != 2) between_0_and_1.push_back(c);
+  }
+  REQUIRE(between_0_and_1.size() < full.contacts.size());
+  REQUIRE_FALSE(between_0_and_1.empty());
+  CHECK(r.contacts == between_0_and_1);
+  for (int i : {0, 2}) {
+    REQUIRE(r.objects[i].report.collided());
+    CHECK(r.objects[i].report.features == full.objects[i].report.features);
+  }
 
   std::vector<sscc::SceneReport> concurrent(2);
   std::thread other([&] { concurrent[0] = scene.step(steps); });
@@ -213,6 +237,7 @@ TEST_CASE("scene: per-object switches, bad input, concurrent steps", "[scene]") 
   for (const auto& c : concurrent) {
     CHECK(c.contacts == r.contacts);
     CHECK(c.features == r.features);
+    for (int i : {0, 2}) CHECK(c.objects[i].report.features == r.objects[i].report.features);
   }
 
   CHECK_THROWS_WITH(scene.step({steps[0]}), Catch::Contains("1 object steps given for 3"));

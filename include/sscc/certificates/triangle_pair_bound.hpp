@@ -36,6 +36,9 @@ namespace sscc {
 /// for r <= 64. Smaller could let a radius round above the true one for large r; larger only
 /// weakens the bounds.
 constexpr double gram_rounding_pad(int modes) {
+#ifdef SSCC_MUTANT_GRAM_PAD_FIXED
+  return 256.0 * std::numeric_limits<double>::epsilon();
+#endif
   return std::max(256.0, 2.0 * (modes + 64.0)) * std::numeric_limits<double>::epsilon();
 }
 

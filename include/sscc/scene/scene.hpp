@@ -6,9 +6,12 @@
 // q0 -> q1 and, optionally, its rigid frame at both ends (x_world = R x_local + t).
 //
 // Reported:
-//  - self-collisions per object, found in the object's own frame, where vertices move
-//    linearly with q and rigid motion changes nothing (SelfCcd::query, certificates
-//    included);
+//  - self-collisions per object, for the motion its SceneObjectOptions::self_motion names:
+//    SelfMotion::kObjectFrame (the default): vertices move linearly with q in the object's
+//    own frame and the frame moves rigidly, which changes no self contact (SelfCcd::query,
+//    certificates included);
+//    SelfMotion::kWorldLinear: each vertex moves on the straight line between its world
+//    positions at the two ends, as between objects (the traditional query on those paths);
 //  - collisions between objects, for world-space linear vertex trajectories: each vertex
 //    moves on the straight line between its world positions at the two ends of the step
 //    (the usual linearisation of a rigid motion over a step), found by a swept-box
@@ -16,6 +19,19 @@
 //  - the earliest time of impact over everything.
 // Guarantee: nothing is missed for those trajectories (the self query's guarantee, and for
 // pairs of objects: conservative node bounds, exact kernels on the positions as computed).
+//
+// Which self motion to use: the two coincide when the frame does not turn (a translation
+// linear in t changes no contact), and kWorldLinear is then answered in the object frame,
+// certificates included. When the frame turns by theta, a world-linear vertex at distance
+// rho from the rotation axis cuts the chord of its arc, up to rho (1 - cos(theta / 2)) inside
+// the rigid path: a half-turn collapses a sphere onto the axis, which the object-frame test
+// never sees. So: a simulator that moves vertices on straight lines in world space (as the
+// inter-object test assumes) wants kWorldLinear, or steps that turn little; one
+// that moves each object rigidly along its frame's interpolation wants kObjectFrame with any
+// rotation (raise SceneOptions::max_object_frame_rotation). The object-frame test refuses a
+// step whose frame turns by more than max_object_frame_rotation (kMaxObjectFrameRotation by
+// default): take smaller steps, or choose kWorldLinear, which costs a traversal whenever the
+// frame turns (the certificates bound the object-frame motion only).
 //
 // Skipping what a step does not need: an object that did not move (q0 == q1 and equal
 // frames) costs nothing: nothing can come into contact during the step, and, as in every
@@ -56,9 +72,24 @@ struct RigidFrame {
 /// above the rounding of a product of a few rotations, far below any real shear.
 inline constexpr double kRotationTolerance = 1e-9;
 
+/// Largest rotation of an object's frame over one step (radians) that the object-frame self
+/// test accepts by default. At this angle a world-linear vertex path leaves the rigid path by
+/// at most 1 - cos(0.125) < 0.8 % of the vertex's distance from the rotation axis (at 60
+/// steps per second, 2.4 turns per second). Larger: steps pass whose world-linear motion
+/// differs more from the motion tested (self contacts a world-linear simulator meets go
+/// unreported); smaller: more ordinary rigid steps are refused.
+inline constexpr double kMaxObjectFrameRotation = 0.25;
+
+/// The vertex motion an object's self test assumes (see the top of this header).
+enum class SelfMotion : std::uint8_t {
+  kObjectFrame,  ///< linear in q in the object's frame, the frame moving rigidly
+  kWorldLinear,  ///< straight lines in world space between the step's two ends
+};
+
 struct SceneObjectOptions {
   bool self_collision = true;  ///< test the object against itself
   bool inter_object = true;    ///< test it against the other objects (both must allow it)
+  SelfMotion self_motion = SelfMotion::kObjectFrame;
 };
 
 /// One object's motion over the step.
@@ -74,7 +105,12 @@ struct ObjectStep {
 /// OMP_NUM_THREADS), 1 runs everything on the caller's thread. The report does not depend
 /// on it; the statistics' vertex counts and times may (self_seconds and inter_seconds add
 /// up the time of every thread).
-struct SceneOptions : SelfCcdOptions {};
+struct SceneOptions : SelfCcdOptions {
+  /// Largest rotation of a frame over the step (radians) accepted for a self test in the
+  /// object's frame; larger steps are refused. Infinity accepts every step: for a simulator
+  /// whose objects follow their frames rigidly, where the object-frame test is exact.
+  double max_object_frame_rotation = kMaxObjectFrameRotation;
+};
 
 enum class SelfTestOutcome : std::uint8_t {
   kTraversed,  ///< the self query ran (partly culled by certificates, or not at all)
@@ -144,7 +180,9 @@ class Scene {
   int object_count() const { return static_cast<int>(objects_.size()); }
 
   /// One time step. `steps` holds one entry per object. Throws std::invalid_argument for a
-  /// wrong count, q of the wrong size or with NaN/infinity, or a frame that is not rigid.
+  /// wrong count, q of the wrong size or with NaN/infinity, a frame that is not rigid, or a
+  /// frame turning by more than options.max_object_frame_rotation under an object-frame self
+  /// test.
   SceneReport step(const std::vector<ObjectStep>& steps, const SceneOptions& options = {}) const;
 
   /// Reference for tests: every pair of objects, all triangle pairs, the same kernels.

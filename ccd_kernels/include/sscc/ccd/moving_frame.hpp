@@ -18,10 +18,16 @@ inline constexpr double kShiftRoundingMargin = 0x1p-51;
 
 /// A lower bound on the exact x - c.
 inline double shifted_lower(double x, double c) {
+#ifdef SSCC_MUTANT_NO_SHIFT_MARGIN
+  return x - c;
+#endif
   return (x - c) - kShiftRoundingMargin * (std::fabs(x) + std::fabs(c));
 }
 /// An upper bound on the exact x - c.
 inline double shifted_upper(double x, double c) {
+#ifdef SSCC_MUTANT_NO_SHIFT_MARGIN
+  return x - c;
+#endif
   return (x - c) + kShiftRoundingMargin * (std::fabs(x) + std::fabs(c));
 }
 
