@@ -40,9 +40,13 @@ class FirstHitTask {
 /// Runs run(task, thread) for task = 0 .. count - 1 on `threads` threads, each task on one
 /// thread (thread in [0, threads), for per-thread scratch), handed out one at a time in
 /// increasing order. An exception in a task is rethrown here after every task ended (the
-/// first in task order).
+/// first in task order); on one thread, at once (the later tasks do not run).
 template <typename Run>
 void run_tasks(int count, int threads, Run run) {
+  if (threads <= 1) {  // no parallel region to open
+    for (int task = 0; task < count; ++task) run(task, 0);
+    return;
+  }
   std::vector<std::exception_ptr> errors(count);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int task = 0; task < count; ++task) {
