@@ -1,0 +1,28 @@
+// The steps a stress case is queried on: on and just inside certificate boundaries (the
+// root's and, in the full run, the smallest node radius and a random node's), steps that
+// stay inside, leave and enter, steps from rest (a mesh touching at rest starts touching),
+// a step that does not move, and random steps of growing amplitude.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "sscc/certificates/certificates.hpp"
+#include "sscc/model/subspace_model.hpp"
+
+namespace sscc::validation {
+
+struct StressStep {
+  std::string kind;  ///< "0 -> (1-1e-12) R_root", ...
+  Eigen::VectorXd q0, q1;
+};
+
+enum class StepBudget { kQuick, kFull, kLargest };
+
+std::vector<StressStep> stress_steps(const SubspaceModel& model, const Certificates& certificates, StepBudget budget,
+                                     std::mt19937_64& rng);
+
+}  // namespace sscc::validation
