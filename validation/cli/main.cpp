@@ -147,6 +147,7 @@ const char* kUsage =
     "            --quick                a few small cases and 2000 scene steps (seconds)\n"
     "            --seed S               default 1\n"
     "            --load-steps N         steps of the long scene run (default 100000)\n"
+    "            --case N               only case N of the table (no long run)\n"
     "  help      this text\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -455,7 +456,8 @@ int run_stress(std::vector<std::string> args) {
     options.quick = true;
     args.erase(quick);
   }
-  const Flags flags = parse_flags(args, {"--seed", "--load-steps"}, "stress");
+  const Flags flags = parse_flags(args, {"--seed", "--load-steps", "--case"}, "stress");
+  if (flags.has("--case")) options.only_case = flags.number<long>("--case");
   if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
   if (flags.has("--load-steps")) options.load_steps = flags.number<long>("--load-steps");
   return run_report(options, flags.quiet, sscc::validation::run_stress, "stress");

@@ -21,6 +21,10 @@ constexpr double kModeSize = 0.25;
 /// Gap between the parallel grids of the degenerate-mesh cases (grid size 1).
 constexpr double kGridGap = 0.2;
 constexpr int kGridCells = 6;
+/// Certificates of the meshes of 5,000 triangles and more: radii resolved to half their
+/// value (epsilon 0.5) and up to a tenth of the global radius, so that the precomputation
+/// of a million triangles takes minutes, not hours.
+const CertificateParameters kLargeMeshCertificates{0.5, 0.1};
 
 /// The direction of the far translations: every coordinate large, none a power of two apart.
 const Eigen::Vector3d kFarDirection(1.0, -0.75, 0.625);
@@ -181,7 +185,7 @@ void add_size_cases(std::vector<StressCase>& cases) {
                        const TriangleMesh mesh = stress_sphere(size.rings, size.segments);
                        return unit_weights(mesh, polynomial_basis(mesh, 9));
                      },
-                     size.reference});
+                     size.reference, false, kLargeMeshCertificates});
   }
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sscc/certificates/certificates.hpp"
 #include "sscc/model/subspace_model.hpp"
 
 namespace sscc::validation {
@@ -23,6 +24,9 @@ struct StressCase {
   std::function<SubspaceModel(std::mt19937_64&)> build;
   StressReference reference = StressReference::kBruteForce;
   bool in_quick = false;  ///< also in the quick run
+  /// The largest meshes trade the certificates' accuracy for a precomputation that fits the
+  /// run's time: looser radii are as sound as tight ones.
+  CertificateParameters certificates = {};
 };
 
 std::vector<StressCase> stress_cases();

@@ -116,16 +116,16 @@ CaseResult run_case(const StressCase& stress_case, bool quick, std::uint64_t see
     result.triangles = model.mesh().triangle_count();
     result.modes = model.mode_count();
     const SubspaceBvh bvh(model);
-    const Certificates certificates = Certificates::precompute(bvh);
+    const Certificates certificates = Certificates::precompute(bvh, stress_case.certificates);
     result.root_radius = certificates.node_radius(0);
     certificates.write(path);
     const SelfCcd detector(bvh, certificates);
     const SelfCcd from_file(bvh, Certificates::read(path, bvh));
     Scene scene;
     scene.add_object(detector);
-    const StepBudget budget = stress_case.reference == StressReference::kTraditional ? StepBudget::kLargest
-                              : quick                                                ? StepBudget::kQuick
-                                                                                     : StepBudget::kFull;
+    StepBudget budget = quick ? StepBudget::kQuick : StepBudget::kFull;
+    if (stress_case.reference == StressReference::kExhaustive) budget = StepBudget::kLarge;
+    if (stress_case.reference == StressReference::kTraditional) budget = StepBudget::kLargest;
     for (const StressStep& step : stress_steps(model, certificates, budget, rng)) {
       ++result.steps;
       const std::string difference = check_step(stress_case, detector, from_file, scene, step, result);
@@ -166,6 +166,7 @@ long run_stress(const StressOptions& options, std::ostream& out, std::ostream& p
   for (std::size_t i = 0; i < all.size(); ++i) {
     const StressCase& stress_case = all[i];
     if (options.quick && !stress_case.in_quick) continue;
+    if (options.only_case != 0 && options.only_case != long(i) + 1) continue;
     progress << "stress: " << stress_case.group << ", " << stress_case.name << " ..." << std::endl;
     const CaseResult result = run_case(stress_case, options.quick, options.seed * 1000003 + i);
     ++cases;
@@ -179,6 +180,11 @@ long run_stress(const StressOptions& options, std::ostream& out, std::ostream& p
         << result.steps << " | " << result.colliding_steps << " | " << result.root_certified_steps << " | "
         << std::fixed << std::setprecision(1) << result.seconds << std::defaultfloat << " | " << outcome_text(result)
         << " |" << std::endl;
+  }
+  if (options.only_case != 0) {
+    out << "stress: cases=" << cases << " identical=" << identical << " refused=" << refused
+        << " mismatches=" << mismatches << std::endl;
+    return mismatches;
   }
   LoadRunOptions load;
   load.steps = options.quick ? std::min(options.load_steps, kQuickLoadSteps) : options.load_steps;

@@ -50,11 +50,12 @@ std::vector<StressStep> stress_steps(const SubspaceModel& model, const Certifica
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(r);
   std::vector<StressStep> steps;
   const double inside = 1 - 1e-12;
-  for (const Radius& radius : probed_radii(certificates, budget == StepBudget::kFull, rng)) {
+  const bool thorough = budget == StepBudget::kFull || budget == StepBudget::kLarge;
+  for (const Radius& radius : probed_radii(certificates, thorough, rng)) {
     const double R = radius.value;
     if (!(R > 0) || !std::isfinite(R)) continue;
     std::vector<std::pair<std::string, double>> factors{{"(1-1e-12)", inside}, {"", 1.0}};
-    if (budget == StepBudget::kFull) {
+    if (thorough) {
       factors.insert(factors.begin(), {"(1-1e-9)", 1 - 1e-9});
       factors.push_back({"(1-2^-50)", 1 - std::ldexp(1.0, -50)});
       factors.push_back({"(1+2^-50)", 1 + std::ldexp(1.0, -50)});
@@ -67,7 +68,7 @@ std::vector<StressStep> stress_steps(const SubspaceModel& model, const Certifica
     if (budget == StepBudget::kLargest) continue;
     steps.push_back({"(1-1e-12)" + radius.name + " both ends (stays inside)", to_q(inside * R * direction()),
                      to_q(inside * R * direction())});
-    if (budget == StepBudget::kFull) {
+    if (thorough) {
       steps.push_back({"4" + radius.name + " -> (1-1e-12)" + radius.name + " (enters)",
                        to_q(kOutsideFactor * R * direction()), to_q(inside * R * direction())});
     }
@@ -80,7 +81,12 @@ std::vector<StressStep> stress_steps(const SubspaceModel& model, const Certifica
   steps.push_back({"0 -> 2 R_root (from rest)", zero, to_q(2 * unit * direction())});
   std::vector<double> amplitudes{0.5, 8};
   if (budget == StepBudget::kFull) amplitudes = {0.5, 2, 8, 32};
+  if (budget == StepBudget::kLarge) amplitudes = {0.5, 2, 8, 32, 128};
   if (budget == StepBudget::kLargest) amplitudes = {2};
+  if (budget == StepBudget::kFull || budget == StepBudget::kQuick) {
+    // The global radius: the floppiest direction moves some vertex by half the mesh's size.
+    steps.push_back({"0 -> R_global", zero, to_q(certificates.global_radius() * direction())});
+  }
   std::uniform_real_distribution<double> fraction(0.0, 1.0);
   for (double amplitude : amplitudes) {
     const double norm = amplitude * unit;

@@ -20,7 +20,10 @@ struct StressStep {
   Eigen::VectorXd q0, q1;
 };
 
-enum class StepBudget { kQuick, kFull, kLargest };
+/// How many steps: kQuick (the test suite's run), kFull (small meshes, the brute force),
+/// kLarge (thousands of triangles: no step at the global radius, whose contacts number in the
+/// millions, but larger random amplitudes), kLargest (10^5 triangles and more: a few steps).
+enum class StepBudget { kQuick, kFull, kLarge, kLargest };
 
 std::vector<StressStep> stress_steps(const SubspaceModel& model, const Certificates& certificates, StepBudget budget,
                                      std::mt19937_64& rng);
