@@ -22,7 +22,7 @@ namespace sscc::validation {
 
 namespace {
 
-constexpr int kObjects = 3;
+constexpr int kObjects = 2;
 constexpr int kModes = 9;
 /// Centre spacing of the unit spheres: a 0.6 gap at rest.
 constexpr double kSpacing = 2.6;
@@ -62,7 +62,7 @@ std::string scene_difference(const SceneReport& serial, const SceneReport& paral
 LoadRunResult run_load(const LoadRunOptions& options, std::ostream& progress) {
   const auto start = std::chrono::steady_clock::now();
   LoadRunResult result;
-  const TriangleMesh mesh = stress_sphere(8, 10);
+  const TriangleMesh mesh = stress_sphere(6, 8);
   const SubspaceModel model(mesh, polynomial_basis(mesh, kModes), Eigen::VectorXd::Ones(kModes));
   const SubspaceBvh bvh(model);
   const SelfCcd detector(bvh, Certificates::precompute(bvh));
