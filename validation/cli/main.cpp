@@ -144,7 +144,7 @@ const char* kUsage =
     "            triangles), then a long scene run on every thread against one; a table and the\n"
     "            line 'stress: cases=N identical=N refused=N mismatches=N' (non-zero exit on a\n"
     "            mismatch)\n"
-    "            --quick                a few small cases and 2000 scene steps (seconds)\n"
+    "            --quick                a few small cases and 500 scene steps (seconds)\n"
     "            --seed S               default 1\n"
     "            --load-steps N         steps of the long scene run (default 100000)\n"
     "            --case N               only case N of the table (no long run)\n"

@@ -10,7 +10,7 @@
 namespace sscc::validation {
 
 /// Steps of the load run in the quick run.
-inline constexpr long kQuickLoadSteps = 2000;
+inline constexpr long kQuickLoadSteps = 500;
 /// Largest growth of the resident set size after the warm-up, in kB. The run's working
 /// set is reached in the warm-up; a leak of 64 bytes per step over 10^5 steps (5.5 MB) would
 /// exceed it, while the allocator's own fluctuation stays far below.

@@ -160,6 +160,16 @@ std::string outcome_text(const CaseResult& result) {
 long run_stress(const StressOptions& options, std::ostream& out, std::ostream& progress) {
   const auto start = std::chrono::steady_clock::now();
   long cases = 0, identical = 0, refused = 0, mismatches = 0;
+  // The long run first, while the process holds only its own memory (its resident size is
+  // then its own, not what the largest cases left with the allocator).
+  LoadRunResult run;
+  if (options.only_case == 0) {
+    LoadRunOptions load;
+    load.steps = options.quick ? std::min(options.load_steps, kQuickLoadSteps) : options.load_steps;
+    load.seed = options.seed;
+    progress << "stress: load, " << load.steps << " scene steps ..." << std::endl;
+    run = run_load(load, progress);
+  }
   out << "| # | group | case | triangles | r | reference | root radius | steps | colliding | root-certified | seconds "
          "| result |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   const std::vector<StressCase> all = stress_cases();
@@ -181,27 +191,19 @@ long run_stress(const StressOptions& options, std::ostream& out, std::ostream& p
         << std::fixed << std::setprecision(1) << result.seconds << std::defaultfloat << " | " << outcome_text(result)
         << " |" << std::endl;
   }
-  if (options.only_case != 0) {
-    out << "stress: cases=" << cases << " identical=" << identical << " refused=" << refused
-        << " mismatches=" << mismatches << std::endl;
-    return mismatches;
+  if (options.only_case == 0) {
+    ++cases;
+    const bool load_identical = run.mismatched_steps == 0 && run.rss_growth_kb <= kRssGrowthLimitKb;
+    identical += load_identical;
+    mismatches += !load_identical;
+    out << "\nload: " << run.steps << " steps of a scene of " << run.objects << " objects (" << run.triangles
+        << " triangles each, r = " << run.modes << "), " << run.threads << " threads against 1: " << run.colliding_steps
+        << " colliding steps, " << run.mismatched_steps << " steps whose reports differ"
+        << (run.first_difference.empty() ? "" : " (first: " + run.first_difference + ")") << "; resident memory "
+        << run.rss_warm_kb << " kB after " << run.warm_up_steps << " warm-up steps, " << run.rss_end_kb
+        << " kB at the end (growth " << run.rss_growth_kb << " kB, limit " << kRssGrowthLimitKb << "); " << std::fixed
+        << std::setprecision(1) << run.seconds << " s" << std::defaultfloat << "\n";
   }
-  LoadRunOptions load;
-  load.steps = options.quick ? std::min(options.load_steps, kQuickLoadSteps) : options.load_steps;
-  load.seed = options.seed;
-  progress << "stress: load, " << load.steps << " scene steps ..." << std::endl;
-  const LoadRunResult run = run_load(load, progress);
-  ++cases;
-  const bool load_identical = run.mismatched_steps == 0 && run.rss_growth_kb <= kRssGrowthLimitKb;
-  identical += load_identical;
-  mismatches += !load_identical;
-  out << "\nload: " << run.steps << " steps of a scene of " << run.objects << " objects (" << run.triangles
-      << " triangles each, r = " << run.modes << "), " << run.threads << " threads against 1: " << run.colliding_steps
-      << " colliding steps, " << run.mismatched_steps << " steps whose reports differ"
-      << (run.first_difference.empty() ? "" : " (first: " + run.first_difference + ")") << "; resident memory "
-      << run.rss_warm_kb << " kB after " << run.warm_up_steps << " warm-up steps, " << run.rss_end_kb
-      << " kB at the end (growth " << run.rss_growth_kb << " kB, limit " << kRssGrowthLimitKb << "); " << std::fixed
-      << std::setprecision(1) << run.seconds << " s" << std::defaultfloat << "\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out << "stress time: " << std::fixed << std::setprecision(1) << seconds << " s" << std::defaultfloat << "\n";
   out << "stress: cases=" << cases << " identical=" << identical << " refused=" << refused

@@ -19,7 +19,7 @@ namespace sscc::validation {
 struct StressOptions {
   bool quick = false;        ///< a few small cases and a short load run: seconds (the test suite's run)
   std::uint64_t seed = 1;    ///< every random choice
-  long load_steps = 100000;  ///< steps of the long scene run (quick: 2000)
+  long load_steps = 100000;  ///< steps of the long scene run (quick: kQuickLoadSteps)
   long only_case = 0;        ///< 1-based: only that case of the table (no long run); 0: all
 };
 
