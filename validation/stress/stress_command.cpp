@@ -135,8 +135,10 @@ CaseResult run_case(const StressCase& stress_case, bool quick, std::uint64_t see
       }
     }
   } catch (const std::exception& e) {
-    result.outcome = Outcome::kRefused;
-    result.message = e.what();
+    if (result.outcome == Outcome::kIdentical) {  // a mismatch before the refusal stays one
+      result.outcome = Outcome::kRefused;
+      result.message = e.what();
+    }
   }
   std::remove(path.c_str());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
