@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSCC_SANITIZE=ON \
   -DSSCC_BUILD_FUZZERS=ON -DSSCC_BUILD_TESTS=OFF -DSSCC_BUILD_VALIDATION=OFF -DSSCC_BUILD_PYTHON=OFF > /dev/null
-targets=(fuzz_mesh_off fuzz_mesh_obj fuzz_mesh_ply fuzz_vega_basis fuzz_certificate_file fuzz_kernels)
+targets=(fuzz_mesh_off fuzz_mesh_obj fuzz_mesh_ply fuzz_vega_basis fuzz_certificate_file fuzz_kernels fuzz_cli_model
+         fuzz_write_off fuzz_tetgen)
 cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
 status=0
 for target in "${targets[@]}"; do

@@ -3,7 +3,9 @@
 # under AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ (without the
 # Python module: an instrumented extension would need the sanitizer runtime preloaded), then
 # the tests of what runs on several threads under ThreadSanitizer in build-tsan/
-# (scripts/tsan.sh). Warnings are errors in the Release build (the sanitizer build only
+# (scripts/tsan.sh), then every fuzz target for a few seconds from its seed corpus
+# (scripts/fuzz.sh: clang with ASan and UBSan in build-fuzz/, building only the fuzz targets
+# and what they link). Warnings are errors in the Release build (the sanitizer build only
 # reports them: GCC's instrumented -O2 code gives spurious maybe-uninitialized and stringop
 # warnings).
 set -euo pipefail
@@ -16,3 +18,6 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSCC_SANITIZE=O
 cmake --build build-sanitize -j "$(nproc)"
 (cd build-sanitize && ctest --output-on-failure -j "$(nproc)")
 bash scripts/tsan.sh
+# Seconds per fuzz target in CI: enough to run the seed corpora and a few thousand
+# mutations of each, so that a reader or loader that starts crashing on its seeds is caught.
+bash scripts/fuzz.sh 5

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <map>
 
@@ -24,6 +25,20 @@ std::string MeshReadReport::summary() const {
 }
 
 namespace {
+
+/// Whether the corners are collinear (a zero cross product), computed on the corners scaled
+/// by one power of two so that the largest coordinate is below 1: the differences and
+/// products then cannot overflow, whatever finite coordinates a file holds.
+bool has_zero_area(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const double largest = std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
+  if (largest == 0.0) return true;
+  const int shift = -std::ilogb(largest) - 1;
+  const auto scaled = [shift](const Eigen::Vector3d& x) {
+    return Eigen::Vector3d(std::ldexp(x.x(), shift), std::ldexp(x.y(), shift), std::ldexp(x.z(), shift));
+  };
+  const Eigen::Vector3d p = scaled(a);
+  return (scaled(b) - p).cross(scaled(c) - p) == Eigen::Vector3d::Zero();
+}
 
 std::string lower_extension(const std::string& path) {
   const auto dot = path.find_last_of('.');
@@ -80,8 +95,7 @@ TriangleMesh read_mesh(const std::string& path, MeshReadReport* report) {
   std::map<std::array<int, 3>, int> seen;
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
     const Triangle& tri = triangles[t];
-    const Eigen::Vector3d& a = raw.vertices[tri[0]];
-    if ((raw.vertices[tri[1]] - a).cross(raw.vertices[tri[2]] - a).squaredNorm() == 0.0) {
+    if (has_zero_area(raw.vertices[tri[0]], raw.vertices[tri[1]], raw.vertices[tri[2]])) {
       r.zero_area_triangles.push_back(t);
     }
     std::array<int, 3> key = tri;

@@ -23,12 +23,11 @@ void LineReader::fail(const std::string& problem) const { throw MeshFileError(fi
 
 double parse_coordinate(const std::string& token, const LineReader& reader) {
   char* end = nullptr;
-  errno = 0;
   const double value = std::strtod(token.c_str(), &end);
   if (end == token.c_str() || *end != '\0') reader.fail("'" + token + "' is not a number");
-  if (!std::isfinite(value) || errno == ERANGE) {
-    reader.fail("coordinate '" + token + "' is not a finite double");
-  }
+  // Overflow gives infinity; underflow (ERANGE with a subnormal or zero) is the correctly
+  // rounded value of the text, which write_off writes for subnormal coordinates: accepted.
+  if (!std::isfinite(value)) reader.fail("coordinate '" + token + "' is not a finite double");
   return value;
 }
 
