@@ -4,10 +4,9 @@
 
 #include <random>
 
-#include "brute_force.hpp"
-#include "sscc/ccd/kernels.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/query/position_ccd.hpp"
+#include "support/pair_reference.hpp"
 #include "support/test_meshes.hpp"
 
 namespace {
@@ -20,34 +19,6 @@ std::vector<Eigen::Vector3d> jittered(const std::vector<Eigen::Vector3d>& from, 
   std::vector<Eigen::Vector3d> x = from;
   for (Eigen::Vector3d& p : x) p += amplitude * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
   return x;
-}
-
-/// Every considered pair (neither adjacent nor excluded), all 15 features through the
-/// kernels: the earliest time per colliding pair.
-std::vector<sscc::TrianglePairContact> exhaustive(const sscc::TriangleMesh& mesh, const sscc::ExcludedPairs& excluded,
-                                                  const std::vector<Eigen::Vector3d>& x0,
-                                                  const std::vector<Eigen::Vector3d>& x1) {
-  std::vector<sscc::TrianglePairContact> pairs;
-  for (int a = 0; a < mesh.triangle_count(); ++a) {
-    for (int b = a + 1; b < mesh.triangle_count(); ++b) {
-      if (mesh.adjacent(a, b) || excluded.contains(a, b)) continue;
-      const double toi =
-          sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]);
-      if (toi <= 1.0) pairs.push_back({a, b, toi});
-    }
-  }
-  return pairs;
-}
-
-void check_equal(const std::vector<sscc::TrianglePairContact>& found,
-                 const std::vector<sscc::TrianglePairContact>& expected) {
-  REQUIRE(found.size() == expected.size());
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    CHECK(found[i].first == expected[i].first);
-    CHECK(found[i].second == expected[i].second);
-    // Both within the kernels' tolerance below the first contact (features seen in another order).
-    CHECK(std::abs(found[i].toi - expected[i].toi) <= sscc::ccd::kDefaultToiTolerance);
-  }
 }
 
 }  // namespace
@@ -64,7 +35,7 @@ TEST_CASE("position CCD: a detector from the mesh alone equals exhaustive testin
       const std::vector<Eigen::Vector3d> next = jittered(x, amplitude, rng);
       INFO("amplitude " << amplitude << " step " << step);
       const sscc::SelfCcdReport report = ccd.query(x, next);
-      check_equal(report.pairs, exhaustive(mesh, {}, x, next));
+      sscc::test::require_same_pairs(report.pairs, sscc::test::brute_force_pairs(mesh, x, next));
       (report.collided() ? colliding : quiet) += 1;
       x = next;
     }
@@ -100,7 +71,7 @@ TEST_CASE("position CCD: the same report as a subspace detector's query_position
         CHECK(other.pairs == report.pairs);
         CHECK(other.features == report.features);
       }
-      check_equal(report.pairs, exhaustive(mesh, excluded, x0, x1));
+      sscc::test::require_same_pairs(report.pairs, sscc::test::brute_force_pairs(mesh, x0, x1, excluded));
       for (const auto& p : report.pairs) CHECK_FALSE(excluded.contains(p.first, p.second));
       colliding += report.collided();
     }

@@ -9,10 +9,10 @@
 #include <cmath>
 #include <random>
 
-#include "brute_force.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/scene/scene.hpp"
+#include "support/pair_reference.hpp"
 #include "support/test_meshes.hpp"
 
 namespace {
@@ -37,29 +37,8 @@ std::vector<Eigen::Vector3d> world_positions(const sscc::SubspaceModel& model, c
 /// Every non-adjacent pair through all 15 features on the world-space straight-line paths,
 /// positions computed here.
 std::vector<sscc::TrianglePairContact> world_brute_force(const sscc::SubspaceModel& model, const sscc::ObjectStep& s) {
-  const auto x0 = world_positions(model, s.q0, s.frame0);
-  const auto x1 = world_positions(model, s.q1, s.frame1);
-  const sscc::TriangleMesh& mesh = model.mesh();
-  std::vector<sscc::TrianglePairContact> pairs;
-  for (int a = 0; a < mesh.triangle_count(); ++a) {
-    for (int b = a + 1; b < mesh.triangle_count(); ++b) {
-      if (mesh.adjacent(a, b)) continue;
-      const double toi =
-          sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]);
-      if (toi <= 1.0) pairs.push_back({a, b, toi});
-    }
-  }
-  return pairs;
-}
-
-void require_same_pairs(const std::vector<sscc::TrianglePairContact>& found,
-                        const std::vector<sscc::TrianglePairContact>& expected) {
-  REQUIRE(found.size() == expected.size());
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    CHECK(found[i].first == expected[i].first);
-    CHECK(found[i].second == expected[i].second);
-    CHECK(std::abs(found[i].toi - expected[i].toi) <= sscc::ccd::kDefaultToiTolerance);
-  }
+  return sscc::test::brute_force_pairs(model.mesh(), world_positions(model, s.q0, s.frame0),
+                                       world_positions(model, s.q1, s.frame1));
 }
 
 sscc::RigidFrame turned(double angle, const Eigen::Vector3d& axis = Eigen::Vector3d::UnitZ()) {
@@ -99,7 +78,7 @@ TEST_CASE(
   const auto expected = world_brute_force(f.model, half_turn);
   // Every vertex off the axis crosses it at t = 1/2: most pairs meet there.
   REQUIRE(expected.size() > static_cast<std::size_t>(f.mesh.triangle_count()));
-  require_same_pairs(collapsed.objects[0].report.pairs, expected);
+  sscc::test::require_same_pairs(collapsed.objects[0].report.pairs, expected);
   CHECK(collapsed.earliest_toi <= 0.5);
   // The world-linear test ignores the rotation bound: it is the motion it tests.
   sscc::SceneOptions strict;
@@ -149,7 +128,7 @@ TEST_CASE("scene self motion: the rotation bound, and world-linear steps against
     CHECK(translated.objects[0].report.features == f.certified.query(s.q0, s.q1).features);
     s.frame1.rotation = turned(normal(rng), {normal(rng), normal(rng), normal(rng)}).rotation * s.frame0.rotation;
     const sscc::SceneReport r = world.step({s});
-    require_same_pairs(r.objects[0].report.pairs, world_brute_force(f.model, s));
+    sscc::test::require_same_pairs(r.objects[0].report.pairs, world_brute_force(f.model, s));
     colliding += r.collided();
   }
   CHECK(colliding >= 2);
