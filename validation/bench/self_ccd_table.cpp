@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "certificate_cache.hpp"
 #include "fcl_self_ccd.hpp"
 #include "model_loading.hpp"
 #include "sscc/certificates/certificates.hpp"
@@ -32,23 +33,10 @@ Certificates cached_certificates(const SubspaceBvh& bvh, const std::string& mesh
                                  std::ostream& progress) {
   std::string basis = o.basis;
   std::replace(basis.begin(), basis.end(), ':', '-');
-  const std::string path =
-      (std::filesystem::path(o.cache_dir) / (std::filesystem::path(mesh).stem().string() + "-" + basis + ".sscc"))
-          .string();
-  if (std::filesystem::exists(path)) {
-    try {
-      return Certificates::read(path, bvh);
-    } catch (const CertificateFileError& e) {
-      progress << "self-CCD table: " << e.what() << ": recomputing\n";
-    }
-  }
-  progress << "self-CCD table: certificates of " << mesh << " (cached in " << path << ")\n";
-  const Certificates certificates = Certificates::precompute(bvh, {}, [&](int done, int levels) {
-    progress << "precompute: level " << done << "/" << levels << " done\n" << std::flush;
-  });
-  std::filesystem::create_directories(o.cache_dir);
-  certificates.write(path);
-  return certificates;
+  const std::filesystem::path file = std::filesystem::path(mesh).stem().string() + "-" + basis + ".sscc";
+  return read_or_precompute_certificates(bvh, (std::filesystem::path(o.cache_dir) / file).string(), false,
+                                         "self-CCD table", progress)
+      .certificates;
 }
 
 }  // namespace

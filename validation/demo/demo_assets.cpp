@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "basis_command.hpp"
+#include "certificate_cache.hpp"
 #include "demo/mesh_units.hpp"
 #include "demo/spring_mesh.hpp"
 #include "model_loading.hpp"
@@ -127,28 +128,10 @@ DemoAssets load_demo_assets(const DemoAssetOptions& o, std::ostream& progress) {
   // The file checks itself against the model too; models with and without the rest contacts
   // excluded keep a file each.
   const std::string certificate_path = stem + (o.exclude_rest_contacts ? "-excluding-rest-contacts" : "") + ".sscc";
-  std::string why = "a fresh precomputation was asked for";
-  if (!o.fresh_certificates) {
-    try {
-      assets.certificates = std::make_unique<Certificates>(Certificates::read(certificate_path, *assets.bvh));
-      progress << "demo: certificates from the cache (" << certificate_path << ")\n";
-    } catch (const CertificateFileError& e) {
-      why = e.what();
-    }
-  }
-  if (!assets.certificates) {
-    progress << "demo: precomputing certificates (" << why << ")\n";
-    const auto start = std::chrono::steady_clock::now();
-    assets.certificates =
-        std::make_unique<Certificates>(Certificates::precompute(*assets.bvh, {}, [&](int done, int levels) {
-          progress << "demo: certificates: level " << done << "/" << levels << " done\n" << std::flush;
-        }));
-    fs::create_directories(o.cache_dir);
-    assets.certificates->write(certificate_path);
-    assets.certificate_seconds = seconds_since(start);
-    progress << "demo: certificates done in " << assets.certificate_seconds << " s, cached in " << certificate_path
-             << '\n';
-  }
+  CachedCertificates cached =
+      read_or_precompute_certificates(*assets.bvh, certificate_path, o.fresh_certificates, "demo", progress);
+  assets.certificates = std::make_unique<Certificates>(std::move(cached.certificates));
+  assets.certificate_seconds = cached.seconds;
   return assets;
 }
 
