@@ -40,8 +40,7 @@ long run_certificate_sweep(const CertificateSweepOptions& o, std::ostream& out, 
   const SubspaceBvh bvh(model);
   const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, o.amplitude, o.seed, o.burst);
   SelfCcdOptions traditional_options;
-  traditional_options.use_certificates = false;
-  traditional_options.use_normal_cones = false;
+  set_traditional(traditional_options);
   progress << "traditional: " << o.steps << " steps\n";
   const TimedRun traditional = run_steps(SelfCcd(bvh), q, traditional_options);
   std::filesystem::create_directories(o.output_dir);

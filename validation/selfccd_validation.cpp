@@ -63,11 +63,11 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   // switched off, "cones" with the certificates off.
   const SelfCcd ccd = certificates ? SelfCcd(bvh, *certificates) : SelfCcd(bvh);
   SelfCcdOptions traditional;
-  traditional.use_certificates = false;
-  traditional.use_normal_cones = false;
-  SelfCcdOptions cones;
-  cones.use_certificates = false;
+  set_traditional(traditional);
+  SelfCcdOptions cones = traditional;
   cones.use_normal_cones = true;
+  SelfCcdOptions bounds = traditional;
+  bounds.use_displacement_bounds = true;
   const int threads = default_threads();
   SelfCcdOptions sscc_one_thread, traditional_one_thread = traditional;
   sscc_one_thread.threads = traditional_one_thread.threads = 1;
@@ -82,16 +82,19 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
     for (int k = 0; k < o.steps; ++k) {
       const auto start = std::chrono::steady_clock::now();
       const double cpu_start = process_cpu_ms();
-      if (method == "sscc" || method == "cones" || method == "traditional" || method == "exhaustive") {
+      if (method == "sscc" || method == "cones" || method == "bounds" || method == "traditional" ||
+          method == "exhaustive") {
         run.reports.push_back(method == "sscc"          ? ccd.query(q[k], q[k + 1])
                               : method == "cones"       ? ccd.query(q[k], q[k + 1], cones)
+                              : method == "bounds"      ? ccd.query(q[k], q[k + 1], bounds)
                               : method == "traditional" ? ccd.query(q[k], q[k + 1], traditional)
                                                         : ccd.query_exhaustive(q[k], q[k + 1]));
         run.pairs.push_back(pair_list(run.reports.back()));
       } else if (method == "fcl") {
         run.pairs.push_back(fcl->step(model.deformed_positions(q[k]), model.deformed_positions(q[k + 1])));
       } else {
-        throw std::invalid_argument("unknown method '" + method + "' (sscc, cones, traditional, exhaustive, fcl)");
+        throw std::invalid_argument("unknown method '" + method +
+                                    "' (sscc, cones, bounds, traditional, exhaustive, fcl)");
       }
       run.milliseconds.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       run.cpu_ms += process_cpu_ms() - cpu_start;

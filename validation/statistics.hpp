@@ -13,4 +13,11 @@ inline double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+/// The arithmetic mean; 0 for no values.
+inline double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double x : values) sum += x;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
 }  // namespace sscc::validation

@@ -21,11 +21,12 @@ NodeBounds parse_bounds(const std::string& bounds) {
 }
 
 SelfCcdOptions query_options(const std::string& mode, const std::string& bounds, bool use_certificates,
-                             double toi_tolerance, double minimum_separation) {
+                             bool use_displacement_bounds, double toi_tolerance, double minimum_separation) {
   SelfCcdOptions options;
   options.mode = parse_mode(mode);
   options.bounds = parse_bounds(bounds);
   options.use_certificates = use_certificates;
+  options.use_displacement_bounds = use_displacement_bounds;
   options.kernel = kernel_options(toi_tolerance, minimum_separation);
   return options;
 }
@@ -38,6 +39,8 @@ py::dict stats_dict(const SelfCcdStats& s) {
   d["kernel_calls"] = s.kernel_calls;
   d["vertices_computed"] = s.vertices_computed;
   d["certified"] = s.certified;
+  d["cone_culled"] = s.cone_culled;
+  d["displacement_culled"] = s.displacement_culled;
   d["root_certified"] = s.root_certified;
   d["seconds"] = s.seconds;
   return d;
@@ -88,8 +91,8 @@ void bind_queries(py::module_& m) {
 
   py::class_<SelfCcd>(m, "SelfCcd",
                       "Continuous self-collision detection of a subspace model over straight-line steps "
-                      "q0 -> q1, culled by certificates when given (otherwise the traditional query: the same "
-                      "code). Nothing is missed for the positions as computed. Immutable; queries release the "
+                      "q0 -> q1, culled by certificates when given (otherwise by the step's displacements, mode by "
+                      "mode). Nothing is missed for the positions as computed. Immutable; queries release the "
                       "GIL and may run from several threads.")
       .def(py::init([](const SubspaceBvh& bvh, const Certificates* certificates) {
              return certificates ? std::make_unique<SelfCcd>(bvh, *certificates) : std::make_unique<SelfCcd>(bvh);
@@ -103,20 +106,21 @@ void bind_queries(py::module_& m) {
       .def(
           "query",
           [](const SelfCcd& detector, py::object q0, py::object q1, const std::string& mode, const std::string& bounds,
-             bool use_certificates, double toi_tolerance, double minimum_separation) {
+             bool use_certificates, bool use_displacement_bounds, double toi_tolerance, double minimum_separation) {
             const Eigen::VectorXd a = vector_from(q0, "q0");
             const Eigen::VectorXd b = vector_from(q1, "q1");
-            const SelfCcdOptions options =
-                query_options(mode, bounds, use_certificates, toi_tolerance, minimum_separation);
+            const SelfCcdOptions options = query_options(mode, bounds, use_certificates, use_displacement_bounds,
+                                                         toi_tolerance, minimum_separation);
             py::gil_scoped_release release;
             return detector.query(a, b, options);
           },
           py::arg("q0"), py::arg("q1"), py::kw_only(), py::arg("mode") = "all", py::arg("bounds") = "hybrid",
-          py::arg("use_certificates") = true, py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
-          py::arg("minimum_separation") = 0.0,
+          py::arg("use_certificates") = true, py::arg("use_displacement_bounds") = true,
+          py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
           (std::string("The step q0 -> q1 (reduced coordinates, (r,) each). ") + kModeDoc +
-           "bounds: node boxes 'hybrid' (default), 'refit' or 'subspace'. use_certificates=False gives "
-           "the traditional query. " +
+           "bounds: node boxes 'hybrid' (default), 'refit' or 'subspace'. use_displacement_bounds: without "
+           "certificates, cull by the step's displacements mode by mode. Both False give the traditional "
+           "query. " +
            kKernelDoc + "Raises ValueError for q of the wrong size or not finite.")
               .c_str())
       .def(
@@ -125,7 +129,8 @@ void bind_queries(py::module_& m) {
              double minimum_separation) {
             const std::vector<Eigen::Vector3d> a = points_from(x0, "x0");
             const std::vector<Eigen::Vector3d> b = points_from(x1, "x1");
-            const SelfCcdOptions options = query_options(mode, "hybrid", false, toi_tolerance, minimum_separation);
+            const SelfCcdOptions options =
+                query_options(mode, "hybrid", false, false, toi_tolerance, minimum_separation);
             py::gil_scoped_release release;
             return detector.query_positions(a, b, options);
           },
@@ -153,7 +158,8 @@ void bind_queries(py::module_& m) {
              double minimum_separation) {
             const Eigen::VectorXd a = vector_from(q0, "q0");
             const Eigen::VectorXd b = vector_from(q1, "q1");
-            const SelfCcdOptions options = query_options(mode, "hybrid", false, toi_tolerance, minimum_separation);
+            const SelfCcdOptions options =
+                query_options(mode, "hybrid", false, false, toi_tolerance, minimum_separation);
             py::gil_scoped_release release;
             return detector.query_exhaustive(a, b, options);
           },

@@ -127,6 +127,7 @@ class SelfCcd:
         mode: _Mode = "all",
         bounds: _Bounds = "hybrid",
         use_certificates: bool = True,
+        use_displacement_bounds: bool = True,
         toi_tolerance: float = ...,
         minimum_separation: float = 0.0,
     ) -> SelfCcdReport: ...

@@ -65,8 +65,7 @@ std::vector<EpsilonRow> epsilon_sweep(const SceneRun& run, std::ostream& progres
   const SubspaceBvh& bvh = *run.assets.bvh;
   const SelfCcd traditional_detector(bvh);
   SelfCcdOptions traditional;
-  traditional.use_certificates = false;
-  traditional.use_normal_cones = false;
+  set_traditional(traditional);
   std::vector<std::vector<SelfCcdReport>> reference;
   long traditional_visits = 0;
   for (const auto& step : run.recorded) {

@@ -27,9 +27,11 @@ struct SelfCcdTableRow {
   std::string mesh;
   int triangles = 0;
   double amplitude = 0.0;
-  double traditional_ms = 0.0, cones_ms = 0.0, sscc_ms = 0.0, fcl_ms = 0.0;  ///< mean per step
-  double traditional_nodes = 0.0, cones_nodes = 0.0, sscc_nodes = 0.0;       ///< node (box) tests per step
-  double traditional_pairs = 0.0, cones_pairs = 0.0;                         ///< triangle-pair tests per step
+  /// Mean per step; bounds: the displacement bounds alone (no certificates, no cones).
+  double traditional_ms = 0.0, cones_ms = 0.0, bounds_ms = 0.0, sscc_ms = 0.0, fcl_ms = 0.0;
+  /// Node (box) tests per step.
+  double traditional_nodes = 0.0, cones_nodes = 0.0, bounds_nodes = 0.0, sscc_nodes = 0.0;
+  double traditional_pairs = 0.0, cones_pairs = 0.0;  ///< triangle-pair tests per step
   double root_radius = 0.0;
   int root_certified_steps = 0;  ///< steps SSCC decided by the root's certificate alone
   int colliding_steps = 0;

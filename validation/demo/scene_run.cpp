@@ -125,11 +125,9 @@ double discrete_step(const SelfCcd& detector, const std::vector<ObjectStep>& ste
 
 }  // namespace
 
-double MethodTimes::mean() const {
-  double s = 0.0;
-  for (double x : ms) s += x;
-  return ms.empty() ? 0.0 : s / static_cast<double>(ms.size());
-}
+double MethodTimes::mean() const { return validation::mean(ms); }
+
+double MethodTimes::self_mean() const { return validation::mean(self_ms); }
 
 double MethodTimes::median() const { return validation::median(ms); }
 
@@ -212,8 +210,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
            << run.assets.certificates->node_radius(0) << '\n';
 
   SceneOptions with, without;
-  without.use_certificates = false;
-  without.use_normal_cones = false;  // traditional: the plain swept-box query
+  set_traditional(without);
   run.threads = default_threads();
   SceneOptions with_one_thread = with, without_one_thread = without;
   with_one_thread.threads = without_one_thread.threads = 1;

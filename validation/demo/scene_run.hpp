@@ -62,6 +62,7 @@ struct MethodTimes {
   int colliding_steps = 0;
   long self_pairs = 0, inter_pairs = 0;
   double mean() const;
+  double self_mean() const;  ///< of self_ms
   double median() const;
   double max() const;
 };

@@ -67,8 +67,9 @@ std::string certificate_path() {
 std::string check_step(const StressCase& stress_case, const SelfCcd& detector, const SelfCcd& from_file,
                        const Scene& scene, const StressStep& step, CaseResult& result) {
   const SubspaceModel& model = detector.bvh().model();
-  SelfCcdOptions traditional;
-  traditional.use_certificates = false;
+  SelfCcdOptions traditional, displacement;
+  set_traditional(traditional);
+  displacement.use_certificates = false;  // the displacement bounds instead
   const SelfCcdReport certified = detector.query(step.q0, step.q1);
   const SelfCcdReport uncertified = detector.query(step.q0, step.q1, traditional);
   const std::vector<Eigen::Vector3d> x0 = positions(model, step.q0), x1 = positions(model, step.q1);
@@ -90,6 +91,7 @@ std::string check_step(const StressCase& stress_case, const SelfCcd& detector, c
   reports.emplace_back("certified query", certified);
   reports.emplace_back("certificates read from file", from_file.query(step.q0, step.q1));
   if (stress_case.reference != StressReference::kTraditional) reports.emplace_back("traditional query", uncertified);
+  reports.emplace_back("displacement-bounded query", detector.query(step.q0, step.q1, displacement));
   reports.emplace_back("query_positions", detector.query_positions(x0, x1));
   ObjectStep object;
   object.q0 = step.q0;

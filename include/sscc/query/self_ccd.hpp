@@ -44,7 +44,8 @@ namespace sscc {
 
 namespace detail {
 class NodeBoundaries;
-}
+class DisplacementBounds;
+}  // namespace detail
 
 enum class FeatureKind : std::uint8_t { kVertexFace, kEdgeEdge };
 
@@ -98,8 +99,8 @@ enum class NodeBounds : std::uint8_t {
 struct SelfCcdOptions {
   SelfCcdMode mode = SelfCcdMode::kAllContacts;
   NodeBounds bounds = NodeBounds::kHybrid;
-  /// Cull by the certificates when the detector has them; false (with use_normal_cones false)
-  /// gives the traditional query.
+  /// Cull by the certificates when the detector has them; false (with use_normal_cones and
+  /// use_displacement_bounds false) gives the traditional query.
   bool use_certificates = true;
   /// Skip nodes, and pairs of neighbouring nodes, that form a patch whose normals stay in a
   /// cone and whose contour stays star-shaped over the step: proven free of self-contact
@@ -109,6 +110,15 @@ struct SelfCcdOptions {
   /// traversal (the contour test rejects most of the hierarchy's patches, whose boundaries
   /// are not star-shaped), so it does not yet pay for itself.
   bool use_normal_cones = false;
+  /// Skip nodes, and pairs of nodes, whose triangles the step's deformation moves too little,
+  /// relative to one another, to close the gaps they have at rest: bounded mode by mode from
+  /// the step's coordinates in O(r) per node (src/query/displacement_bound.hpp states the
+  /// theorem), so a deformation concentrated in one part leaves the others culled where the
+  /// certificates' norm bound cannot. Exact, like every cull here. Applied to query() when
+  /// it uses no certificates (with them it costs more than it saves: they cull the same nodes
+  /// sooner); query_positions has no coordinates. All three switches false give the
+  /// traditional query, the SSCC paper's baseline.
+  bool use_displacement_bounds = true;
   /// Threads for one query: 0 uses every thread OpenMP may use (the cores, or
   /// OMP_NUM_THREADS), 1 the serial traversal. The report is the same for every count, in
   /// the same order, first hits included; only the statistics differ (work that several
@@ -120,15 +130,24 @@ struct SelfCcdOptions {
   ccd::CcdOptions kernel;
 };
 
+/// Makes `options` the traditional query's (the SSCC paper's baseline, the plain swept-box
+/// traversal): certificates, normal cones and displacement bounds off, the rest kept.
+inline void set_traditional(SelfCcdOptions& options) {
+  options.use_certificates = false;
+  options.use_normal_cones = false;
+  options.use_displacement_bounds = false;
+}
+
 struct SelfCcdStats {
   long nodes_visited = 0;
   long box_tests = 0;
   long triangle_pairs = 0;  ///< non-adjacent pairs whose swept boxes overlapped
   long kernel_calls = 0;
   long vertices_computed = 0;
-  long certified = 0;           ///< nodes and sibling pairs culled by a certificate
-  long cone_culled = 0;         ///< nodes and node pairs culled by the normal-cone test
-  bool root_certified = false;  ///< the whole step decided by the root's certificate
+  long certified = 0;            ///< nodes and sibling pairs culled by a certificate
+  long cone_culled = 0;          ///< nodes and node pairs culled by the normal-cone test
+  long displacement_culled = 0;  ///< nodes and node pairs culled by the displacement bounds
+  bool root_certified = false;   ///< the whole step decided by the root's certificate
   double seconds = 0.0;
 };
 
@@ -185,7 +204,8 @@ class SelfCcd {
  private:
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
-  std::shared_ptr<const detail::NodeBoundaries> boundaries_;  // the normal-cone cull's static data
+  std::shared_ptr<const detail::NodeBoundaries> boundaries_;        // the normal-cone cull's static data
+  std::shared_ptr<const detail::DisplacementBounds> displacement_;  // the displacement cull's
 };
 
 }  // namespace sscc

@@ -1,0 +1,113 @@
+// Displacement culling for subspace queries: a proof, per node (or pair of nodes) of the
+// hierarchy, that the deformation of one step moves its triangles too little, relative to one
+// another, to close the gaps they have at rest. Unlike a certificate (a bound on ||q_hat||
+// valid in every direction), it looks at the step's own coordinates mode by mode, so a
+// deformation that is large where it happens (an ear swinging) leaves the rest of the mesh
+// culled. Private to the library; SelfCcd's traversal calls it when
+// SelfCcdOptions::use_displacement_bounds.
+//
+// THEOREM. Node n's vertices are x_v(t) = p_v + U_v q(t) (U_v: the 3 x r block of the scaled
+// basis, q(t) = (1 - t) q0 + t q1 the scaled coordinates). Let C_n be any 3 x r matrix (the
+// node's mean block, SubspaceBvh::subspace_bound) and w_nj >= max over the node's vertices of
+// ||(U_v - C_n) e_j||, F_n >= max over them of ||U_v - C_n||_F. Every point of a triangle of
+// n, x = sum_i l_i x_i with barycentric l, is p_x + C_n q(t) + u_x(t) with p_x = sum_i l_i p_i
+// the same combination at rest and ||u_x(t)|| <= max_v ||(U_v - C_n) q(t)||, at most both
+//   sum_j |q_j(t)| w_nj <= max(sum_j |q0_j| w_nj, sum_j |q1_j| w_nj)   and
+//   F_n ||q(t)|| <= F_n max(||q0||, ||q1||)
+// (sums of absolute values, and norms, of functions linear in t are convex: largest at an
+// end); D_n is the smaller of the two (the first wins when few modes move, the second when
+// many do). So for a
+// point x of triangle T under node a and y of T' under node b at the same t,
+//   ||x - y|| >= ||p_x - p_y|| - ||(C_a - C_b) q(t)|| - D_a - D_b
+//            >= dist_rest(T, T') - G_ab - D_a - D_b,  G_ab := max over the ends of ||(C_a - C_b) q||
+// (again a convex function of t). With clearance(T) a lower bound of T's rest distance to every
+// triangle it is considered with, and clearance(n) the least over n's triangles:
+//   (intra) 2 D_n < clearance(n): no two considered triangles under n come within 0 (or d);
+//   (inter) D_a + D_b + G_ab < max(clearance(a), clearance(b)): no considered pair across a, b
+// does (dist_rest(T, T') is at least both triangles' clearances). Any two nodes, not only
+// siblings. Triangles touching at rest have clearance 0: nodes holding them are never culled.
+//
+// FLOATING POINT. The queries test the positions they compute, x~_v = fl(p_v + U_v q_hat),
+// moving linearly: each differs from the exact x_v(t) by at most
+//   E = sqrt(3) gamma_{r+1} (max |p| + sum_j max |U_.j| max(|q0_j|, |q1_j|))
+// (an r-term dot product and one addition per coordinate, interpolated between the two ends),
+// so every condition above is tested with 2 E added, and with the kernels' minimum separation d.
+// The rest clearances are lower bounds by construction: a separating direction's gap with its
+// rounding subtracted (displacement_bound.cpp); spreads are rounded up, sums of non-negative
+// terms carry a relative slack far above their rounding (kSumSlack), and G_ab is computed from
+// the node centres' displacements with their rounding bound added.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+#include "query/sweep.hpp"
+#include "sscc/bvh/subspace_bvh.hpp"
+
+namespace sscc::detail {
+
+/// Relative slack on computed sums of non-negative terms (r products and additions, relative
+/// error at most gamma_{r+1}, about 1e-13 for r = 1000). Smaller than the rounding could cull a
+/// pair that only rounding keeps apart; larger only culls less.
+inline constexpr double kSumSlack = 1.0 + 1e-10;
+
+/// What the cull needs from the rest shape and the basis, per node: built once per detector.
+class DisplacementBounds {
+ public:
+  explicit DisplacementBounds(const SubspaceBvh& bvh);
+
+  /// A lower bound of the rest distance from any triangle under node n to any triangle it is
+  /// considered with (neither adjacent nor excluded), anywhere in the mesh; 0 when one touches
+  /// another at rest, infinity when none is considered.
+  double clearance(int n) const { return clearance_[n]; }
+  /// spread(n)[j] >= max over node n's vertices v of ||(U_v - C_n) e_j||, r values.
+  const double* spread(int n) const { return &spread_[static_cast<std::size_t>(n) * modes_]; }
+  /// >= max over node n's vertices v of ||U_v - C_n||_F.
+  double frobenius_spread(int n) const { return frobenius_spread_[n]; }
+  /// The largest absolute rest coordinate.
+  double largest_rest_coordinate() const { return largest_rest_coordinate_; }
+  /// Per mode j, the largest absolute entry of the scaled basis's column j.
+  const Eigen::VectorXd& largest_basis_entry() const { return largest_basis_entry_; }
+
+ private:
+  int modes_ = 0;
+  std::vector<double> clearance_;
+  std::vector<double> spread_;
+  std::vector<double> frobenius_spread_;
+  double largest_rest_coordinate_ = 0.0;
+  Eigen::VectorXd largest_basis_entry_;
+};
+
+/// The cull for one step q_hat0 -> q_hat1 (scaled coordinates); nothing here outlives it.
+class StepDisplacement {
+ public:
+  StepDisplacement(const DisplacementBounds& bounds, const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0,
+                   const Eigen::VectorXd& q_hat1, double separation);
+
+  /// Whether no two considered triangles under node n come within the separation during the step.
+  bool node_apart(int n);
+  /// Whether no considered pair of a triangle under a and one under b does.
+  bool nodes_apart(int a, int b);
+
+ private:
+  /// D_n of the theorem, once per node.
+  double reach(int n);
+  /// C_n q_hat at both ends, with the bound of their rounding, once per node.
+  struct Centres {
+    Eigen::Vector3d at0, at1;
+    double rounding;
+  };
+  const Centres& centres(int n);
+
+  const DisplacementBounds& bounds_;
+  const SubspaceBvh& bvh_;
+  Eigen::VectorXd q_hat0_, q_hat1_;
+  Eigen::VectorXd magnitude0_, magnitude1_;  // |q_hat0|, |q_hat1| componentwise
+  double norm_;                              // max(||q_hat0||, ||q_hat1||)
+  double margin_;                            // 2 E plus the separation
+  LazyBoxes<double> reaches_;
+  LazyBoxes<Centres> centres_;
+};
+
+}  // namespace sscc::detail

@@ -1,0 +1,191 @@
+// The displacement cull: its rest clearances against a brute-force minimum over every
+// considered triangle pair, and the culled query against exhaustive testing and an
+// independent brute force on steps scaled to just before, at and just after the first
+// contact (where a bound that is too generous would show), with global and local modes.
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "query/displacement_bound.hpp"
+#include "sscc/ccd/kernels.hpp"
+#include "sscc/geometry/triangle_distance.hpp"
+#include "sscc/model/polynomial_basis.hpp"
+#include "sscc/query/self_ccd.hpp"
+#include "support/pair_reference.hpp"
+#include "support/parametric_meshes.hpp"
+#include "support/test_meshes.hpp"
+
+namespace {
+
+using Eigen::Vector3d;
+
+/// A tube of radius 0.1 around a helix of radius 1 rising `pitch` per turn, 2.5 turns: the
+/// coils' surfaces are pitch - 0.2 apart (close at pitch 0.25).
+sscc::TriangleMesh helix_tube(double pitch) {
+  const sscc::test::Surface surface = [pitch](double u, double v) {
+    const double phi = 5 * M_PI * u, theta = 2 * M_PI * v;
+    const double h = pitch / (2 * M_PI);
+    const Vector3d centre(std::cos(phi), std::sin(phi), h * phi);
+    const Vector3d tangent = Vector3d(-std::sin(phi), std::cos(phi), h).normalized();
+    const Vector3d outward(std::cos(phi), std::sin(phi), 0.0);
+    const Vector3d binormal = tangent.cross(outward);
+    return Vector3d(centre + 0.1 * (std::cos(theta) * outward + std::sin(theta) * binormal));
+  };
+  return sscc::TriangleMesh(sscc::test::grid_positions(60, 8, false, true, surface),
+                            sscc::test::grid_triangles(60, 8, false, true));
+}
+
+/// The first `polynomial` polynomial modes and `bumps` local ones (a random direction times a
+/// Gaussian of width 0.15 about a random vertex): deformations that are global and ones that
+/// are large in one place only.
+sscc::SubspaceModel mixed_model(const sscc::TriangleMesh& mesh, int polynomial, int bumps, std::uint64_t seed) {
+  const Eigen::MatrixXd global = sscc::polynomial_basis(mesh, polynomial);
+  Eigen::MatrixXd basis(global.rows(), polynomial + bumps);
+  basis.leftCols(polynomial) = global;
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<int> vertex(0, mesh.vertex_count() - 1);
+  for (int b = 0; b < bumps; ++b) {
+    const Vector3d centre = mesh.vertices()[vertex(rng)];
+    const Vector3d direction = Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    for (int v = 0; v < mesh.vertex_count(); ++v) {
+      const double d2 = (mesh.vertices()[v] - centre).squaredNorm();
+      basis.block<3, 1>(3 * v, polynomial + b) = std::exp(-d2 / (2 * 0.15 * 0.15)) * direction;
+    }
+  }
+  return sscc::SubspaceModel(mesh, basis, Eigen::VectorXd::Ones(polynomial + bumps));
+}
+
+/// The rest distance of two triangles: 0 when they intersect (exactly decided), else the
+/// closest points' distance.
+double rest_distance(const sscc::TriangleMesh& mesh, int a, int b) {
+  const auto& x = mesh.vertices();
+  const sscc::Triangle& ta = mesh.triangles()[a];
+  const sscc::Triangle& tb = mesh.triangles()[b];
+  if (sscc::ccd::triangles_intersect(x[ta[0]], x[ta[1]], x[ta[2]], x[tb[0]], x[tb[1]], x[tb[2]])) return 0.0;
+  return sscc::closest_points_disjoint_triangles({x[ta[0]], x[ta[1]], x[ta[2]]}, {x[tb[0]], x[tb[1]], x[tb[2]]})
+      .distance;
+}
+
+std::vector<std::pair<std::string, sscc::SubspaceModel>> models() {
+  std::vector<std::pair<std::string, sscc::SubspaceModel>> all;
+  all.emplace_back("parallel sheets", mixed_model(sscc::test::parallel_sheets(8, 0.03), 27, 4, 1));
+  all.emplace_back("helix tube", mixed_model(helix_tube(0.25), 27, 4, 2));
+  all.emplace_back("sphere", mixed_model(sscc::test::uv_sphere(12, 18), 27, 4, 3));
+  return all;
+}
+
+bool same_reports(const sscc::SelfCcdReport& a, const sscc::SelfCcdReport& b) {
+  return a.pairs == b.pairs && a.features == b.features;
+}
+
+}  // namespace
+
+TEST_CASE("displacement bounds: every node's clearance is a lower bound of its triangles' rest distances",
+          "[displacement][query]") {
+  for (const auto& [name, model] : models()) {
+    INFO(name);
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::DisplacementBounds bounds(bvh);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    std::vector<double> nearest(mesh.triangle_count(), std::numeric_limits<double>::infinity());
+    for (int a = 0; a < mesh.triangle_count(); ++a) {
+      for (int b = 0; b < mesh.triangle_count(); ++b) {
+        if (model.considers(a, b)) nearest[a] = std::min(nearest[a], rest_distance(mesh, a, b));
+      }
+    }
+    int tight = 0, leaves = 0;
+    for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
+      const sscc::SubspaceBvh::Node& node = bvh.nodes()[n];
+      double least = std::numeric_limits<double>::infinity();
+      for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
+        least = std::min(least, nearest[bvh.triangle_order()[i]]);
+      }
+      REQUIRE(bounds.clearance(n) <= least);
+      if (node.is_leaf()) {
+        ++leaves;
+        tight += bounds.clearance(n) >= 0.999 * least;
+      }
+    }
+    CHECK(tight >= 0.95 * leaves);  // not a bound that merely holds: nearly the distance itself
+  }
+}
+
+TEST_CASE("displacement bounds: at rest, a touching pair makes its nodes' clearance zero", "[displacement][query]") {
+  // Two sheets in one plane overlapping along a strip: triangles of different sheets cross.
+  sscc::TriangleMesh sheets = sscc::test::parallel_sheets(4, 0.0);
+  const sscc::SubspaceModel model = mixed_model(sheets, 4, 0, 1);
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::detail::DisplacementBounds bounds(bvh);
+  CHECK(bounds.clearance(0) == 0.0);
+}
+
+TEST_CASE(
+    "displacement bounds: the culled query reports what exhaustive testing and brute force do, up to and "
+    "past the first contact",
+    "[displacement][query]") {
+  long culled = 0, steps = 0, colliding = 0;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal;
+  for (const auto& [name, model] : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::SelfCcd ccd(bvh);
+    const int r = model.mode_count();
+    sscc::SelfCcdOptions bounded;
+    bounded.use_certificates = false;
+    REQUIRE(bounded.use_displacement_bounds);  // the library's default
+    sscc::SelfCcdOptions parallel = bounded;
+    parallel.threads = 2;
+    for (int trial = 0; trial < 4; ++trial) {
+      Eigen::VectorXd start(r), direction(r);
+      for (int k = 0; k < r; ++k) start[k] = 0.002 * normal(rng), direction[k] = normal(rng);
+      if (trial % 2 == 1) direction.head(r - 4).setZero();  // only the local modes move
+      // The smallest scale whose step reaches a contact, to within 1e-3 (bisection on the
+      // exhaustive query; the start has none).
+      const auto collides = [&](double scale) {
+        return ccd.query_exhaustive(start, start + scale * direction).collided();
+      };
+      INFO(name << " trial " << trial);
+      REQUIRE_FALSE(collides(0.0));
+      double lo = 0.0, hi = 1e-3;
+      while (!collides(hi) && hi < 1e3) lo = hi, hi *= 2;
+      REQUIRE(collides(hi));
+      for (int i = 0; i < 30 && hi - lo > 1e-3 * hi; ++i) (collides(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+      for (double fraction : {0.01, 0.1, 0.5, 0.9, 0.99, 1.0, 1.001, 1.01, 1.2}) {
+        const Eigen::VectorXd q1 = start + fraction * hi * direction;
+        INFO(name << " trial " << trial << " at " << fraction << " of the first contact's scale");
+        const sscc::SelfCcdReport exhaustive = ccd.query_exhaustive(start, q1);
+        const sscc::SelfCcdReport report = ccd.query(start, q1, bounded);
+        REQUIRE(same_reports(report, exhaustive));
+        REQUIRE(same_reports(ccd.query(start, q1, parallel), exhaustive));
+        sscc::test::require_same_pairs(
+            report.pairs,
+            sscc::test::brute_force_pairs(model.mesh(), model.deformed_positions(start), model.deformed_positions(q1)));
+        culled += report.stats.displacement_culled;
+        colliding += report.collided();
+        ++steps;
+      }
+    }
+  }
+  CHECK(culled > 100);            // the bounds did cull
+  CHECK(colliding >= steps / 3);  // and the steps do collide
+}
+
+TEST_CASE("displacement bounds: not applied with certificates, nor when switched off", "[displacement][query]") {
+  const sscc::SubspaceModel model = mixed_model(sscc::test::parallel_sheets(6, 0.05), 9, 2, 4);
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd ccd(bvh);
+  Eigen::VectorXd q1 = Eigen::VectorXd::Zero(model.mode_count());
+  q1[0] = 1e-4;
+  sscc::SelfCcdOptions off;
+  sscc::set_traditional(off);
+  CHECK(ccd.query(Eigen::VectorXd::Zero(model.mode_count()), q1, off).stats.displacement_culled == 0);
+  sscc::SelfCcdOptions on;
+  on.use_certificates = false;
+  CHECK(ccd.query(Eigen::VectorXd::Zero(model.mode_count()), q1, on).stats.displacement_culled > 0);
+}
