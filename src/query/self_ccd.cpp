@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -535,12 +536,42 @@ SelfCcd::SelfCcd(const SubspaceBvh& bvh) : SelfCcd(std::make_shared<const Subspa
 SelfCcd::SelfCcd(const SubspaceBvh& bvh, const Certificates& certificates)
     : SelfCcd(std::make_shared<const SubspaceBvh>(bvh), std::make_shared<const Certificates>(certificates)) {}
 
+namespace detail {
+
+/// The culls' static data of one hierarchy, each part built once, when a query first needs
+/// it (0.3 s for the boundary chains of a 75k-triangle mesh: not worth paying for detectors
+/// that never use the cones).
+class CullData {
+ public:
+  explicit CullData(std::shared_ptr<const SubspaceBvh> bvh) : bvh_(std::move(bvh)) {}
+  /// For a query with these options: null when it does not use the cones.
+  const NodeBoundaries* boundaries(const SelfCcdOptions& options) {
+    if (!options.use_normal_cones) return nullptr;
+    std::call_once(boundaries_once_, [&] { boundaries_ = std::make_unique<const NodeBoundaries>(*bvh_); });
+    return boundaries_.get();
+  }
+  /// Null when the query does not use the displacement bounds (they are not used with
+  /// certificates: self_ccd.cpp, SelfCcd::query).
+  const DisplacementBounds* displacement(const SelfCcdOptions& options, bool with_certificates) {
+    if (!options.use_displacement_bounds || with_certificates) return nullptr;
+    std::call_once(displacement_once_, [&] { displacement_ = std::make_unique<const DisplacementBounds>(*bvh_); });
+    return displacement_.get();
+  }
+
+ private:
+  std::shared_ptr<const SubspaceBvh> bvh_;
+  std::once_flag boundaries_once_, displacement_once_;
+  std::unique_ptr<const NodeBoundaries> boundaries_;
+  std::unique_ptr<const DisplacementBounds> displacement_;
+};
+
+}  // namespace detail
+
 SelfCcd::SelfCcd(std::shared_ptr<const SubspaceBvh> bvh, std::shared_ptr<const Certificates> certificates)
     : bvh_(std::move(bvh)), certificates_(std::move(certificates)) {
   if (!bvh_) throw std::invalid_argument("SelfCcd: no hierarchy");
   if (certificates_) certificates_->check_belongs_to(*bvh_);
-  boundaries_ = std::make_shared<const detail::NodeBoundaries>(*bvh_);
-  displacement_ = std::make_shared<const detail::DisplacementBounds>(*bvh_);
+  culls_ = std::make_shared<detail::CullData>(bvh_);
 }
 
 namespace {
@@ -584,15 +615,15 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   // The displacement cull only without certificates: with them it culls what they cull, a
   // little later, at O(r) per node (measured on the default demo's traversed steps, 2.13 ms
   // per step with it against 2.02 ms without; without certificates 6.0 ms against 9.1 ms).
-  const detail::DisplacementBounds* displacement = certificates ? nullptr : displacement_.get();
+  const detail::DisplacementBounds* displacement = culls_->displacement(options, certificates != nullptr);
+  const detail::NodeBoundaries* boundaries = culls_->boundaries(options);
   if (threads > 1) {
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), far_past,
-                                           displacement);
+      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries, far_past, displacement);
     };
     return parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
   }
-  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries_.get(), far_past, displacement);
+  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries, far_past, displacement);
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
@@ -626,10 +657,12 @@ SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, c
   refit.bounds = NodeBounds::kRefit;
   const int threads = detail::resolve_threads(options.threads);
   if (threads > 1) {
-    const auto make_context = [&] { return std::make_unique<StepContext>(*bvh_, x0, x1, refit, boundaries_.get()); };
+    const auto make_context = [&] {
+      return std::make_unique<StepContext>(*bvh_, x0, x1, refit, culls_->boundaries(options));
+    };
     return parallel_traversal(*bvh_, nullptr, 0.0, refit, threads, make_context, start);
   }
-  StepContext context(*bvh_, x0, x1, refit, boundaries_.get());
+  StepContext context(*bvh_, x0, x1, refit, culls_->boundaries(options));
   Traversal<StepContext>(*bvh_, context, nullptr, 0.0).intra(0);
   return context.finish(start);
 }

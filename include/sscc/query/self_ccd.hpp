@@ -43,8 +43,7 @@
 namespace sscc {
 
 namespace detail {
-class NodeBoundaries;
-class DisplacementBounds;
+class CullData;
 }  // namespace detail
 
 enum class FeatureKind : std::uint8_t { kVertexFace, kEdgeEdge };
@@ -204,8 +203,9 @@ class SelfCcd {
  private:
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
-  std::shared_ptr<const detail::NodeBoundaries> boundaries_;        // the normal-cone cull's static data
-  std::shared_ptr<const detail::DisplacementBounds> displacement_;  // the displacement cull's
+  // What the normal-cone and displacement culls precompute, each on the first query that
+  // uses it (thread-safe; copies share it).
+  std::shared_ptr<detail::CullData> culls_;
 };
 
 }  // namespace sscc
