@@ -30,6 +30,20 @@ using sscc::validation::Query;
 /// well above the bracket's relative width (1e-6 by default) and its rounding.
 constexpr double kProbeMargin = 1e-5;
 
+/// Below this fraction of the query's extent, d is in the kernel's rounding-limited range
+/// (separation_search.hpp): a contact may be reported somewhat beyond the band there, so
+/// the band is checked only above it (no false negative is allowed anywhere).
+constexpr double kRoundingLimitedSeparation = 1e-7;
+
+/// The largest distance between two of the eight points: the primitives' sizes and motion.
+double extent(const Query& q) {
+  double e = 0.0;
+  for (const auto& p : q.points) {
+    for (const auto& r : q.points) e = std::max(e, (p - r).norm());
+  }
+  return e;
+}
+
 struct Tally {
   int contacts = 0;
   int misses = 0;
@@ -60,9 +74,11 @@ void check_separation(const Query& q, double d, Tally& tally) {
     return;
   }
   ++tally.contacts;
-  const DistanceBracket band = decide(q, reach);
-  INFO("minimum distance in [" << band.lower << ", " << band.upper << "]");
-  CHECK(band.lower <= reach);
+  if (d >= kRoundingLimitedSeparation * extent(q)) {
+    const DistanceBracket band = decide(q, reach);
+    INFO("minimum distance in [" << band.lower << ", " << band.upper << "]");
+    CHECK(band.lower <= reach);
+  }
   // Before the reported time the distance stays above d (every earlier stretch was
   // excluded, the reported time's own sample included).
   if (result.toi > 0) CHECK(decide(q, d, 0.0, result.toi).upper > d);
@@ -89,21 +105,21 @@ void check_query(const Query& q, Tally& tally) {
 TEST_CASE("minimum separation against the minimum-distance reference: random queries", "[kernels][separation]") {
   std::mt19937_64 rng(23);
   Tally tally;
-  for (int i = 0; i < 150; ++i) {
+  for (int i = 0; i < 400; ++i) {
     for (Kind kind : {Kind::kVertexFace, Kind::kEdgeEdge}) {
       INFO(sscc::validation::to_string(kind) << " query " << i);
       check_query(sscc::validation::random_query(kind, rng), tally);
     }
   }
-  CHECK(tally.contacts > 300);
-  CHECK(tally.misses > 300);
+  CHECK(tally.contacts > 800);
+  CHECK(tally.misses > 2000);
   CHECK(tally.sharp >= 0.9 * tally.probed);
 }
 
 TEST_CASE("minimum separation against the minimum-distance reference: degenerate queries", "[kernels][separation]") {
   std::mt19937_64 rng(29);
   Tally tally;
-  for (int i = 0; i < 60; ++i) {
+  for (int i = 0; i < 200; ++i) {
     for (Kind kind : {Kind::kVertexFace, Kind::kEdgeEdge}) {
       INFO(sscc::validation::to_string(kind) << " query " << i);
       check_query(sscc::validation::near_degenerate_query(kind, rng), tally);
@@ -111,7 +127,7 @@ TEST_CASE("minimum separation against the minimum-distance reference: degenerate
       check_query(sscc::validation::resting_contact_query(kind, rng), tally);
     }
   }
-  CHECK(tally.contacts > 300);
-  CHECK(tally.misses > 100);
+  CHECK(tally.contacts > 2000);
+  CHECK(tally.misses > 1500);
   CHECK(tally.sharp >= 0.9 * tally.probed);
 }

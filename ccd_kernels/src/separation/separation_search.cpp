@@ -24,64 +24,89 @@ constexpr double kNormSlack = 1.0 + 1e-14;
 /// F(t, u, v) = A(t) + u B(t) + v C(t) over the parameter domain (the triangle u, v >= 0,
 /// u + v <= 1 for vertex-face, the unit square for edge-edge): the difference between a
 /// point of the first primitive and a point of the second (vertex-face: v minus a point of
-/// the face; edge-edge: a point of edge a minus a point of edge b).
+/// the face; edge-edge: a point of edge a minus a point of edge b). Only differences of the
+/// input points are used, so that rounding scales with the primitives' extent and motion,
+/// not with their distance from the origin.
 struct Motion {
   bool triangle_domain;
-  Eigen::Vector3d x0[4], x1[4];  // the four points at t = 0 and t = 1
-  int vertices;                  // of the domain: 3 or 4
-  /// F at the domain's vertices, at t = 0 and t = 1, with rounding-error bounds:
-  /// vertex-face: v - f0, v - f1, v - f2; edge-edge: a0 - b0, a1 - b0, a0 - b1, a1 - b1.
+  int vertices;  // of the domain: 3 or 4
+  /// F at the domain's vertices (u, v) = (0, 0), (1, 0), (0, 1) [, (1, 1)], at t = 0 and
+  /// t = 1, with rounding-error bounds: vertex-face v - f0, v - f1, v - f2; edge-edge
+  /// a0 - b0, a1 - b0, a0 - b1, a1 - b1.
   BVec3 corner[2][4];
 
-  explicit Motion(const FourPointMotion& m) : triangle_domain(m.pair == PrimitivePair::kVertexFace) {
-    for (int i = 0; i < 4; ++i) x0[i] = m.t0[i], x1[i] = m.t1[i];
-    vertices = triangle_domain ? 3 : 4;
+  explicit Motion(const FourPointMotion& m)
+      : triangle_domain(m.pair == PrimitivePair::kVertexFace), vertices(triangle_domain ? 3 : 4) {
     for (int c = 0; c < vertices; ++c) {
       const int first = triangle_domain ? 3 : (c & 1);
       const int second = triangle_domain ? c : 2 + (c >> 1);
       for (int k = 0; k < 3; ++k) {
-        corner[0][c][k] = Bounded::exact(x0[first][k]) - Bounded::exact(x0[second][k]);
-        corner[1][c][k] = Bounded::exact(x1[first][k]) - Bounded::exact(x1[second][k]);
+        corner[0][c][k] = Bounded::exact(m.t0[first][k]) - Bounded::exact(m.t0[second][k]);
+        corner[1][c][k] = Bounded::exact(m.t1[first][k]) - Bounded::exact(m.t1[second][k]);
       }
     }
   }
 
-  /// A, B, C at time t, in floating point (for the closest point, not for any bound).
-  void terms(double t, Eigen::Vector3d& a, Eigen::Vector3d& b, Eigen::Vector3d& c) const {
-    Eigen::Vector3d x[4];
-    for (int i = 0; i < 4; ++i) x[i] = x0[i] + t * (x1[i] - x0[i]);
-    if (triangle_domain) {  // v - (f0 + u (f1 - f0) + v (f2 - f0))
-      a = x[3] - x[0], b = x[0] - x[1], c = x[0] - x[2];
-    } else {  // (a0 + u (a1 - a0)) - (b0 + v (b1 - b0))
-      a = x[0] - x[2], b = x[1] - x[0], c = x[2] - x[3];
-    }
+  /// The domain's vertices' F at time t, in floating point (for the closest point, not for
+  /// any bound).
+  Eigen::Vector3d corner_at(int c, double t) const {
+    Eigen::Vector3d f;
+    for (int k = 0; k < 3; ++k) f[k] = (1.0 - t) * corner[0][c][k].value + t * corner[1][c][k].value;
+    return f;
   }
 };
 
-/// Parameters (u, v) and the value of F at the closest point to the origin of one segment
-/// of the domain's boundary, from (u0, v0) along (du, dv): F = p + s e, s in [0, 1].
+/// |x|, scaled first so that neither a tiny nor a huge x under- or overflows in the squares.
+double scaled_norm(const Eigen::Vector3d& x) {
+  const double largest = x.cwiseAbs().maxCoeff();
+  return largest > 0.0 ? largest * (x / largest).norm() : 0.0;
+}
+
+/// A point of the domain and its F.
 struct Candidate {
   double u, v;
   Eigen::Vector3d f;
 };
 
+/// The point of the segment F = p + s e, s in [0, 1], nearest the origin; (u, v) =
+/// (u0, v0) + s (du, dv). Inside the segment F is made orthogonal to e a second time: the
+/// first pass leaves a component along e of the rounding of p (relative to |p|, not to the
+/// far smaller |F|), which would tilt the direction of closest approach by |p| / |F| ulps
+/// and loosen the bound along it by the segment's length times that tilt. Orthogonal to e,
+/// the direction's remaining error costs only its square.
 Candidate closest_on_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& e, double u0, double v0, double du,
                              double dv) {
   const double ee = e.squaredNorm();
   const double s = ee > 0.0 ? std::clamp(-p.dot(e) / ee, 0.0, 1.0) : 0.0;
-  return {u0 + s * du, v0 + s * dv, p + s * e};
+  Eigen::Vector3d f = p + s * e;
+  if (s > 0.0 && s < 1.0) f -= (f.dot(e) / ee) * e;
+  return {u0 + s * du, v0 + s * dv, f};
 }
 
-/// The domain point where |F(t, ., .)| is smallest, in floating point. F is affine in
-/// (u, v), so |F|^2 is a convex quadratic: its minimum over the domain is the unconstrained
-/// one when that lies inside, and otherwise lies on the boundary, a few segments. The
-/// unconstrained one is the foot of the perpendicular to the plane of the domain's image,
-/// taken along the normal b x c: the direction then stays accurate for long, thin domains
-/// (nearly parallel edges), where solving the normal equations would tilt it by their
-/// condition number times the rounding, and bound the distance far too loosely.
-Candidate closest_point(const Motion& m, double t) {
-  Eigen::Vector3d a, b, c;
-  m.terms(t, a, b, c);
+/// The closest point of the domain at one time, and the direction to bound along.
+struct Closest {
+  Candidate nearest;          // the domain point where |F| is smallest (floating point)
+  Eigen::Vector3d direction;  // along which the domain's vertices stay farthest (not normalised)
+};
+
+/// The closest point, in floating point. F is affine in (u, v), so |F|^2 is a convex
+/// quadratic: its minimum over the domain is the unconstrained one when that lies inside,
+/// and otherwise lies on the boundary, a few segments.
+///
+/// The unconstrained one is the foot of the perpendicular to the plane of the domain's
+/// image, taken along the normal b x c: the direction then stays accurate for long, thin
+/// domains (nearly parallel edges), where solving the normal equations would tilt it by
+/// their condition number times the rounding.
+///
+/// On the boundary, the direction is the segment candidate along which the smallest vertex
+/// projection is largest: in exact arithmetic that is the nearest one's, but where a vertex
+/// and the adjacent segment tie to rounding, the vertex's direction can be tilted by the
+/// segment's distance over its length, which a long segment turns into a loss in the bound
+/// far larger than the distance's own rounding.
+Closest closest_point(const Motion& m, double t) {
+  Eigen::Vector3d k[4];
+  for (int c = 0; c < m.vertices; ++c) k[c] = m.corner_at(c, t);
+  const Eigen::Vector3d a = k[0], b = k[1] - k[0], c = k[2] - k[0];
   const Eigen::Vector3d normal = b.cross(c);
   const double nn = normal.squaredNorm();
   if (nn > 0.0) {
@@ -89,21 +114,32 @@ Candidate closest_point(const Motion& m, double t) {
     const double u = -a.cross(c).dot(normal) / nn;
     const double v = a.cross(b).dot(normal) / nn;
     const bool inside = u >= 0.0 && v >= 0.0 && (m.triangle_domain ? u + v <= 1.0 : u <= 1.0 && v <= 1.0);
-    if (inside) return {u, v, normal * (a.dot(normal) / nn)};
+    if (inside) {
+      const Eigen::Vector3d foot = normal * (a.dot(normal) / nn);
+      return {{u, v, foot}, foot};
+    }
   }
   std::array<Candidate, 4> edges;
   int count = 0;
-  edges[count++] = closest_on_segment(a, b, 0, 0, 1, 0);
-  edges[count++] = closest_on_segment(a, c, 0, 0, 0, 1);
+  edges[count++] = closest_on_segment(k[0], b, 0, 0, 1, 0);
+  edges[count++] = closest_on_segment(k[0], c, 0, 0, 0, 1);
   if (m.triangle_domain) {
-    edges[count++] = closest_on_segment(a + b, c - b, 1, 0, -1, 1);
+    edges[count++] = closest_on_segment(k[1], k[2] - k[1], 1, 0, -1, 1);
   } else {
-    edges[count++] = closest_on_segment(a + b, c, 1, 0, 0, 1);
-    edges[count++] = closest_on_segment(a + c, b, 0, 1, 1, 0);
+    edges[count++] = closest_on_segment(k[1], k[3] - k[1], 1, 0, 0, 1);
+    edges[count++] = closest_on_segment(k[2], k[3] - k[2], 0, 1, 1, 0);
   }
-  return *std::min_element(edges.begin(), edges.begin() + count, [](const Candidate& x, const Candidate& y) {
-    return x.f.squaredNorm() < y.f.squaredNorm();
-  });
+  Closest closest{edges[0], edges[0].f};
+  double best_support = -INFINITY;
+  for (int e = 0; e < count; ++e) {
+    const double length = scaled_norm(edges[e].f);
+    if (length < scaled_norm(closest.nearest.f)) closest.nearest = edges[e];
+    if (!(length > 0.0)) continue;
+    double support = INFINITY;
+    for (int v = 0; v < m.vertices; ++v) support = std::min(support, k[v].dot(edges[e].f) / length);
+    if (support > best_support) best_support = support, closest.direction = edges[e].f;
+  }
+  return closest;
 }
 
 /// The primitives at one time: the separating direction there and the domain's vertices.
@@ -116,13 +152,12 @@ struct Sample {
   BVec3 corner[4];                                      // F at the domain's vertices at t
 
   Sample(const Motion& m, double time) : t(time) {
-    const Candidate closest = closest_point(m, t);
-    params[0] = closest.u, params[1] = closest.v;
-    // Scaled before normalising, so that neither a tiny nor a huge F under- or overflows.
-    const double largest = closest.f.cwiseAbs().maxCoeff();
-    distance = largest > 0.0 ? largest * (closest.f / largest).norm() : 0.0;
-    if (largest > 0.0 && std::isfinite(distance)) {
-      direction = (closest.f / largest).normalized();
+    const Closest closest = closest_point(m, t);
+    params[0] = closest.nearest.u, params[1] = closest.nearest.v;
+    distance = scaled_norm(closest.nearest.f);
+    const double length = scaled_norm(closest.direction);
+    if (length > 0.0 && std::isfinite(length)) {
+      direction = closest.direction / length;
       norm_bound = direction.norm() * kNormSlack;
     }
     const Bounded s = Bounded::exact(1.0) - Bounded::exact(t);

@@ -4,7 +4,11 @@
 // Guarantee: conservative. Never a false negative; "contact" may be reported when the
 // distance only comes within d (1 + kSeparationRelativeTolerance), or when the budget
 // kSeparationMaxBoxes runs out or an interval of t can no longer be halved in doubles
-// (rounding keeps the bound from deciding). The reported time is never later than the first time the
+// (rounding keeps the bound from deciding). Rounding limits the band: the bound's own error
+// is a few units in the last place of the primitives' extent (their sizes and motion), and
+// the directions it uses carry a little more; for d below about 1e-8 of the extent, seen on
+// near-degenerate queries, a contact may be reported for a distance somewhat beyond the band
+// (never a missed one). The reported time is never later than the first time the
 // distance reaches d.
 //
 // Method: the difference between a point of one primitive and a point of the other,
