@@ -86,11 +86,9 @@ void check_separation(const Query& q, double d, Tally& tally) {
 }
 
 /// The query at separations around its own minimum distance and at a few fixed ones
-/// (relative to its size).
+/// (relative to its extent).
 void check_query(const Query& q, Tally& tally) {
-  double size = 0.0;
-  for (const auto& p : q.points) size = std::max(size, p.cwiseAbs().maxCoeff());
-  for (double fraction : {1e-4, 1e-2, 0.1}) check_separation(q, fraction * size, tally);
+  for (double fraction : {1e-4, 1e-2, 0.1}) check_separation(q, fraction * extent(q), tally);
   const DistanceBracket whole = min_distance_bracket(q);
   if (whole.lower > 0.0) {
     ++tally.probed;
@@ -113,6 +111,25 @@ TEST_CASE("minimum separation against the minimum-distance reference: random que
   }
   CHECK(tally.contacts > 800);
   CHECK(tally.misses > 2000);
+  CHECK(tally.sharp >= 0.9 * tally.probed);
+}
+
+TEST_CASE("minimum separation against the minimum-distance reference: far from the origin", "[kernels][separation]") {
+  // Rounding that grew with the coordinates' magnitude rather than the primitives' extent
+  // would loosen the bound past the band here.
+  const Eigen::Vector3d far(1e6, -3e5, 7e5);
+  std::mt19937_64 rng(31);
+  Tally tally;
+  for (int i = 0; i < 150; ++i) {
+    for (Kind kind : {Kind::kVertexFace, Kind::kEdgeEdge}) {
+      INFO(sscc::validation::to_string(kind) << " query " << i);
+      Query q = sscc::validation::random_query(kind, rng);
+      for (auto& p : q.points) p += far;
+      check_query(q, tally);
+    }
+  }
+  CHECK(tally.contacts > 200);
+  CHECK(tally.misses > 600);
   CHECK(tally.sharp >= 0.9 * tally.probed);
 }
 
