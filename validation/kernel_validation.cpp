@@ -17,6 +17,7 @@
 #include "agreement.hpp"
 #include "degenerate_benchmark.hpp"
 #include "fcl_kernels.hpp"
+#include "min_distance.hpp"
 #include "plot.hpp"
 #include "query_generators.hpp"
 #include "query_set.hpp"
@@ -181,7 +182,68 @@ std::vector<ToleranceTiming> toi_tolerance_sweep(const std::vector<Query>& vf, c
   return timings;
 }
 
-void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Query>& ee,
+/// Minimum separation at several d on the first 1000 queries of each kind: positives,
+/// touching ones, those confirmed within d by sampling, and the reference's verdict
+/// (min_distance.hpp): false negatives and positives beyond d (1 + kSeparationRelativeTolerance),
+/// both 0 when the guarantee holds. Returns their count.
+long separation_sweep(const std::vector<Query>& vf, const std::vector<Query>& ee,
+                      const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
+  std::filesystem::create_directories(options.output_dir);
+  progress << "sweep: minimum separation d (sampled distances for confirmation, the reference for the guarantee)\n";
+  std::ofstream sep(options.output_dir + "/separation.csv");
+  sep << "d,queries,positives,touching,confirmed_within_d,not_confirmed,mean_us,reference_fn,beyond_band\n";
+  std::vector<Query> sample;
+  for (std::size_t i = 0; i < std::min<std::size_t>(1000, vf.size()); ++i) {
+    sample.push_back(vf[i]);
+    sample.push_back(ee[i]);
+  }
+  std::vector<bool> touching;
+  std::vector<double> sampled;
+  for (const Query& q : sample) {
+    touching.push_back(run_kernel(q).hit);
+    sampled.push_back(sampled_min_distance(q, 40));
+  }
+  long problems = 0;
+  for (double d : {1e-4, 1e-3, 1e-2, 3e-2, 1e-1}) {
+    ccd::CcdOptions o;
+    o.minimum_separation = d;
+    const double reach = d * (1 + ccd::kSeparationRelativeTolerance);
+    long positives = 0, touch = 0, confirmed = 0, reference_fn = 0, beyond_band = 0;
+    for (std::size_t i = 0; i < sample.size(); ++i) {
+      const bool hit = run_kernel(sample[i], o).hit;
+      positives += hit;
+      touch += touching[i];
+      confirmed += hit && !touching[i] && sampled[i] <= d;
+      if (touching[i] && !hit) out << "separation false negative: " << describe(sample[i]) << '\n';
+      BracketOptions question;
+      question.threshold = hit ? reach : d;
+      const DistanceBracket minimum = min_distance_bracket(sample[i], question);
+      if (!hit && minimum.upper <= d) {
+        ++reference_fn;
+        out << "separation false negative (reference): d=" << d << ' ' << describe(sample[i]) << '\n';
+      }
+      if (hit && minimum.lower > reach) {
+        ++beyond_band;
+        out << "separation positive beyond d(1 + tolerance) (reference): d=" << d << ' ' << describe(sample[i]) << '\n';
+      }
+    }
+    problems += reference_fn + beyond_band;
+    const auto answer = [&](const Query& q) { return run_kernel(q, o).hit; };
+    const double us = median_mean_us(sample, answer, options.repeats);
+    const long not_confirmed = positives - touch - confirmed;
+    sep << d << ',' << sample.size() << ',' << positives << ',' << touch << ',' << confirmed << ',' << not_confirmed
+        << ',' << us << ',' << reference_fn << ',' << beyond_band << '\n';
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "separation d=%.0e: queries=%zu positives=%ld touching=%ld confirmed_within_d=%ld "
+                  "not_confirmed=%ld mean_us=%.3f reference_fn=%ld beyond_band=%ld",
+                  d, sample.size(), positives, touch, confirmed, not_confirmed, us, reference_fn, beyond_band);
+    out << line << '\n';
+  }
+  return problems;
+}
+
+long sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Query>& ee,
                               const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
   std::filesystem::create_directories(options.output_dir);
   progress << "sweep: time of impact tolerance 1e-2 .. 1e-12\n";
@@ -194,46 +256,10 @@ void sweep_time_against_error(const std::vector<Query>& vf, const std::vector<Qu
                   t.vertex_face_us, t.edge_edge_us);
     out << line << '\n';
   }
-  progress << "sweep: minimum separation d (sampled distances for confirmation)\n";
-  std::ofstream sep(options.output_dir + "/separation.csv");
-  sep << "d,queries,positives,touching,confirmed_within_d,not_confirmed,mean_us\n";
-  std::vector<Query> sample;
-  for (std::size_t i = 0; i < std::min<std::size_t>(1000, vf.size()); ++i) {
-    sample.push_back(vf[i]);
-    sample.push_back(ee[i]);
-  }
-  std::vector<bool> touching;
-  std::vector<double> sampled;
-  for (const Query& q : sample) {
-    touching.push_back(run_kernel(q).hit);
-    sampled.push_back(sampled_min_distance(q, 40));
-  }
-  for (double d : {1e-4, 1e-3, 1e-2, 3e-2, 1e-1}) {
-    ccd::CcdOptions o;
-    o.minimum_separation = d;
-    long positives = 0, touch = 0, confirmed = 0;
-    for (std::size_t i = 0; i < sample.size(); ++i) {
-      const bool hit = run_kernel(sample[i], o).hit;
-      positives += hit;
-      touch += touching[i];
-      confirmed += hit && !touching[i] && sampled[i] <= d;
-      if (touching[i] && !hit) out << "separation false negative: " << describe(sample[i]) << '\n';
-    }
-    const auto answer = [&](const Query& q) { return run_kernel(q, o).hit; };
-    const double us = median_mean_us(sample, answer, 1);
-    const long not_confirmed = positives - touch - confirmed;
-    sep << d << ',' << sample.size() << ',' << positives << ',' << touch << ',' << confirmed << ',' << not_confirmed
-        << ',' << us << '\n';
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "separation d=%.0e: queries=%zu positives=%ld touching=%ld confirmed_within_d=%ld "
-                  "not_confirmed=%ld mean_us=%.3f",
-                  d, sample.size(), positives, touch, confirmed, not_confirmed, us);
-    out << line << '\n';
-  }
   toi.close();
-  sep.close();
+  const long problems = separation_sweep(vf, ee, options, out, progress);
   write_plots(options.output_dir, progress);
+  return problems;
 }
 
 long report_random(const KernelValidationOptions& options, std::ostream& out, std::ostream& progress) {
@@ -247,6 +273,7 @@ long report_random(const KernelValidationOptions& options, std::ostream& out, st
       degenerate[k].push_back(near_degenerate_query(kinds[k], rng));
     }
   }
+  if (options.separation_only) return separation_sweep(random[0], random[1], options, out, progress);
   long problems = 0;
   for (int k = 0; k < 2; ++k) {
     problems += report_generated("random", kinds[k], random[k], options, out, progress);
@@ -257,8 +284,8 @@ long report_random(const KernelValidationOptions& options, std::ostream& out, st
     problems += t.disagreements;
   }
   const std::size_t n = std::min<std::size_t>(100000, random[0].size());
-  sweep_time_against_error({random[0].begin(), random[0].begin() + n}, {random[1].begin(), random[1].begin() + n},
-                           options, out, progress);
+  problems += sweep_time_against_error({random[0].begin(), random[0].begin() + n},
+                                       {random[1].begin(), random[1].begin() + n}, options, out, progress);
   return problems;
 }
 

@@ -15,6 +15,8 @@ struct KernelValidationOptions {
   /// Random queries of each kind (0 to skip the random report); a tenth as many
   /// near-degenerate ones are added.
   long random = 0;
+  /// With `random`: only the minimum-separation sweep, on the same queries as the full report.
+  bool separation_only = false;
   std::uint64_t seed = 1;
   /// Where the CSV files and plots of the run-time-against-error sweeps go.
   std::string output_dir = "validation-output";

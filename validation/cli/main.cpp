@@ -43,6 +43,7 @@ const char* kUsage =
     "            --repeats R     timing repeats, the median is reported (default 5)\n"
     "            --search-slow N hill-climb N steps per kind for the slowest query\n"
     "            --exponent-range E  coordinates the search makes stay within 2^-E..2^E (default 1074)\n"
+    "            --separation-only   with --random: only the minimum-separation sweep, on the same queries\n"
     "            --quiet         no progress output\n"
     "  precompute  the certificates of a model, written to a certificate file\n"
     "            --mesh FILE --basis B --weights FILE   the model, as for selfccd\n"
@@ -162,7 +163,7 @@ const char* kUsage =
 }
 
 /// Flags that take no value (besides --quiet).
-const std::set<std::string> kSwitches{"--exclude-rest-contacts"};
+const std::set<std::string> kSwitches{"--exclude-rest-contacts", "--separation-only"};
 
 /// "--flag value" pairs, "--quiet" and switches, checked against the command's known flags.
 struct Flags {
@@ -237,9 +238,10 @@ int run_report(const Options& options, bool quiet, Report report, const std::str
 }
 
 int run_kernels(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(
-      args, {"--queries", "--random", "--seed", "--output", "--repeats", "--search-slow", "--exponent-range"},
-      "kernels");
+  const Flags flags = parse_flags(args,
+                                  {"--queries", "--random", "--seed", "--output", "--repeats", "--search-slow",
+                                   "--exponent-range", "--separation-only"},
+                                  "kernels");
   sscc::validation::KernelValidationOptions options;
   if (flags.has("--queries")) options.queries_dir = flags.text("--queries");
   if (flags.has("--random")) options.random = flags.number<long>("--random");
@@ -248,6 +250,10 @@ int run_kernels(const std::vector<std::string>& args) {
   if (flags.has("--repeats")) options.repeats = flags.number<int>("--repeats");
   if (flags.has("--search-slow")) options.search_slow = flags.number<long>("--search-slow");
   if (flags.has("--exponent-range")) options.exponent_range = flags.number<int>("--exponent-range");
+  options.separation_only = flags.on("--separation-only");
+  if (options.separation_only && (options.random == 0 || !options.queries_dir.empty() || options.search_slow != 0)) {
+    usage_error("kernels --separation-only needs --random N and neither --queries nor --search-slow");
+  }
   if (options.queries_dir.empty() && options.random == 0 && options.search_slow == 0) {
     usage_error("kernels needs --queries DIR, --random N or --search-slow N");
   }

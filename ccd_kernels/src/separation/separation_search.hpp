@@ -2,17 +2,26 @@
 // some t in [0, 1]?
 //
 // Guarantee: conservative. Never a false negative; "contact" may be reported when the
-// distance only comes within d (1 + kSeparationRelativeTolerance), or when the box budget
-// kSeparationMaxBoxes runs out. The reported time is never later than the first time the
+// distance only comes within d (1 + kSeparationRelativeTolerance), or when the budget
+// kSeparationMaxBoxes runs out or an interval of t can no longer be halved in doubles
+// (rounding keeps the bound from deciding). Rounding limits the band: the bound's own error
+// is a few units in the last place of the primitives' extent (their sizes and motion), and
+// the directions it uses carry a little more; for d below about 1e-8 of the extent, seen on
+// near-degenerate queries, a contact may be reported for a distance somewhat beyond the band
+// (never a missed one). The reported time is never later than the first time the
 // distance reaches d.
 //
 // Method: the difference between a point of one primitive and a point of the other,
-// F(t, u, v) = A(t) + u B(t) + v C(t), is multilinear in (t, u, v), so over a box of
-// parameters each coordinate of F lies between its values at the eight corners. Boxes are
-// taken earliest t first; a box is excluded when the corner bounds (with rounding-error
-// bounds) keep |F| above d, per coordinate or along the box's mean direction, and accepted
-// when it is narrower in t than the time-of-impact tolerance and one of its corners lies
-// within d (1 + kSeparationRelativeTolerance).
+// F(t, u, v) = A(t) + u B(t) + v C(t), is affine in (u, v) at each t, so the distance at t
+// is that of the origin from a triangle or parallelogram, and along any direction n the
+// smallest n . F over the domain is at one of its 3 or 4 vertices. The search subdivides t
+// alone, earliest first. At each sampled t it finds the closest point (floating point), and
+// with it the direction of closest approach; an interval is excluded when, along the
+// directions at its ends blended linearly, the vertices' Bernstein bounds (with
+// rounding-error bounds) keep the distance above d. That bound is exact at the ends and its
+// error shrinks with the square of the interval's width, so few intervals are examined. An
+// interval is accepted when the sampled distance at its start, or at its end if it is
+// narrower than the time-of-impact tolerance, is within d (1 + kSeparationRelativeTolerance).
 #pragma once
 
 #include "four_point_motion.hpp"

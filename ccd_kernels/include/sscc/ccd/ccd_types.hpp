@@ -17,8 +17,9 @@ inline constexpr double kMinToiTolerance = 0x1p-48;
 /// cost more subdivision; zero could exhaust the box budget. It never causes a false
 /// negative.
 inline constexpr double kSeparationRelativeTolerance = 1e-3;
-/// Upper bound on the subdivision boxes examined by the minimum-separation mode. When it
-/// is reached the answer is "contact" at the earliest time not excluded (conservative).
+/// Upper bound on the subdivision boxes (time intervals) examined by the minimum-separation
+/// mode. When it is reached the answer is "contact" at the earliest time not excluded
+/// (conservative).
 inline constexpr int kSeparationMaxBoxes = 1 << 16;
 
 struct CcdOptions {
