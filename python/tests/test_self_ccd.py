@@ -24,6 +24,26 @@ def test_small_step_is_certified_by_the_root(sphere_bvh, sphere_certificates):
     assert not traditional.collided
 
 
+def test_displacement_bounds_without_certificates(sphere_bvh):
+    # Without certificates the query culls by the step's displacements; switched off, it is
+    # the traditional query. Both report what the exhaustive reference does.
+    detector = sscc.SelfCcd(sphere_bvh)
+    rng = np.random.default_rng(5)
+    culled = 0
+    for amplitude in (0.01, 0.05, 0.4, 1.2):
+        q0 = random_q(rng, amplitude)
+        q1 = q0 + random_q(rng, amplitude)
+        reference = detector.query_exhaustive(q0, q1)
+        bounded = detector.query(q0, q1, use_certificates=False)
+        plain = detector.query(q0, q1, use_certificates=False, use_displacement_bounds=False)
+        for report in (bounded, plain):
+            np.testing.assert_array_equal(report.pairs, reference.pairs)
+            np.testing.assert_array_equal(report.toi, reference.toi)
+        assert plain.stats["displacement_culled"] == 0
+        culled += bounded.stats["displacement_culled"]
+    assert culled > 0
+
+
 def test_query_equals_exhaustive(sphere_bvh, sphere_certificates):
     detector = sscc.SelfCcd(sphere_bvh, sphere_certificates)
     rng = np.random.default_rng(21)
