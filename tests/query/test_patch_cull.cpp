@@ -131,7 +131,7 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
       cones.use_normal_cones = true;
       const sscc::SelfCcdReport with_cones = ccd.query(q0, q1, cones);
       sscc::SelfCcdOptions plain;
-      plain.use_normal_cones = false;
+      sscc::set_traditional(plain);
       const sscc::SelfCcdReport traditional = ccd.query(q0, q1, plain);
       const sscc::SelfCcdReport exhaustive = ccd.query_exhaustive(q0, q1);
       REQUIRE(with_cones.pairs == exhaustive.pairs);
@@ -157,7 +157,7 @@ TEST_CASE("normal cones: query_positions and any-hit mode agree with the unculle
   const sscc::SubspaceBvh bvh(model);
   const sscc::SelfCcd ccd(bvh);
   sscc::SelfCcdOptions plain;
-  plain.use_normal_cones = false;
+  sscc::set_traditional(plain);
   for (int k = 0; k < 2; ++k) {
     const Eigen::VectorXd q0 = sscc::test::keyframe_q(2, k), q1 = sscc::test::keyframe_q(2, k + 1);
     const auto x0 = model.deformed_positions(q0), x1 = model.deformed_positions(q1);
