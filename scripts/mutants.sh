@@ -29,9 +29,11 @@ declare -A guard=(
   [NO_POSITION_ROUNDING]='[rounding]'              # certificates pad position rounding (triangle_pair_bound.cpp)
   [GRAM_PAD_FIXED]='[rounding]'                    # Gram pad grows with r (triangle_pair_bound.hpp)
   [DISPLACEMENT_NO_CENTRES]='[displacement]'       # two nodes' relative motion counted (displacement_bound.cpp)
+  [AFFINE_NO_RESIDUAL]='[displacement]'            # what the affine fit leaves out counted (displacement_bound.cpp)
 )
 order=(OWNS_ALWAYS_TRUE NO_SHIFT_MARGIN SEPARATION_3D INFLATE_RADII NO_CONSTANT_MODE_MULTIPLIER BOX_BOX_SINGLE_MODE
-  ACCEPT_REFLECTIONS NO_POSITION_ROUNDING GRAM_PAD_FIXED DISPLACEMENT_NO_CENTRES)
+  ACCEPT_REFLECTIONS NO_POSITION_ROUNDING GRAM_PAD_FIXED DISPLACEMENT_NO_CENTRES
+  AFFINE_NO_RESIDUAL)
 if [ $# -gt 0 ]; then order=("$@"); fi
 for name in "${order[@]}"; do
   if [ -z "${guard[$name]+set}" ]; then echo "mutants: unknown mutant $name" >&2; exit 2; fi

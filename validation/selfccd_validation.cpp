@@ -59,8 +59,8 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   if (!certificates && std::find(o.methods.begin(), o.methods.end(), "sscc") != o.methods.end()) {
     throw std::invalid_argument("method sscc needs --certificates FILE.sscc (from sscc precompute)");
   }
-  // One detector: "traditional" is the same query with the certificates and the normal cones
-  // switched off, "cones" with the certificates off.
+  // One detector: "traditional" is the same query with every cull of SelfCcdOptions switched
+  // off, "cones" and "bounds" with only the normal cones or the displacement bounds on.
   const SelfCcd ccd = certificates ? SelfCcd(bvh, *certificates) : SelfCcd(bvh);
   SelfCcdOptions traditional;
   set_traditional(traditional);
@@ -68,6 +68,9 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
   cones.use_normal_cones = true;
   SelfCcdOptions bounds = traditional;
   bounds.use_displacement_bounds = true;
+  for (const SelfCcdOptions& each : {SelfCcdOptions(), traditional, cones, bounds}) {
+    ccd.prepare(each);  // precomputation, as the certificates: not timed
+  }
   const int threads = default_threads();
   SelfCcdOptions sscc_one_thread, traditional_one_thread = traditional;
   sscc_one_thread.threads = traditional_one_thread.threads = 1;

@@ -117,7 +117,59 @@ std::vector<double> triangle_clearances(const SubspaceBvh& bvh) {
   return clearance;
 }
 
+/// Fits, per mode, the affine map of the mode's displacements over `vertices` (least squares,
+/// regularised so that flat or degenerate nodes get a finite matrix: the theorem holds for any
+/// matrix, only the residual bound must match the one stored), and bounds each residual.
+/// Rounding: the residual is evaluated from differences of magnitude at most |U e_j| + |m| and
+/// ||A|| (|p| + |c|); 16 u of those is far above the few roundings each term carries.
+void fit_affine(const SubspaceModel& model, const std::vector<int>& vertices, double* maps, double* residuals) {
+  const int r = model.mode_count();
+  const auto& rest = model.mesh().vertices();
+  Vector3d centre = Vector3d::Zero();
+  double farthest = 0.0;
+  for (int v : vertices) centre += rest[v];
+  centre /= static_cast<double>(vertices.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (int v : vertices) {
+    scatter += (rest[v] - centre) * (rest[v] - centre).transpose();
+    farthest = std::max(farthest, rest[v].norm());
+  }
+  scatter += (1e-6 * scatter.trace() + std::numeric_limits<double>::min()) * Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d inverse = scatter.inverse();
+  if (!inverse.allFinite()) inverse.setZero();
+  const auto displacement = [&](int v, int j) {
+    return Vector3d(model.scaled_basis()(3 * v, j), model.scaled_basis()(3 * v + 1, j),
+                    model.scaled_basis()(3 * v + 2, j));
+  };
+  for (int j = 0; j < r; ++j) {
+    Vector3d mean = Vector3d::Zero();
+    for (int v : vertices) mean += displacement(v, j);
+    mean /= static_cast<double>(vertices.size());
+    Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+    for (int v : vertices) moment += (displacement(v, j) - mean) * (rest[v] - centre).transpose();
+    const Eigen::Matrix3d map = moment * inverse;
+    double residual = 0.0, largest = 0.0;
+    for (int v : vertices) {
+      residual = std::max(residual, (displacement(v, j) - mean - map * (rest[v] - centre)).norm());
+      largest = std::max(largest, displacement(v, j).norm());
+    }
+    const double magnitude = largest + mean.norm() + map.norm() * (farthest + centre.norm());
+    residuals[j] = residual * kSumSlack + 16.0 * kRoundoff * magnitude;
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) maps[(3 * a + b) * r + j] = map(a, b);
+    }
+  }
+}
+
 }  // namespace
+
+const double* DisplacementBounds::affine_maps(int n) const {
+  return affine_index_[n] < 0 ? nullptr : &affine_maps_[static_cast<std::size_t>(affine_index_[n]) * 9 * modes_];
+}
+
+const double* DisplacementBounds::affine_residuals(int n) const {
+  return affine_index_[n] < 0 ? nullptr : &affine_residuals_[static_cast<std::size_t>(affine_index_[n]) * modes_];
+}
 
 DisplacementBounds::DisplacementBounds(const SubspaceBvh& bvh) : modes_(bvh.model().mode_count()) {
   const SubspaceModel& model = bvh.model();
@@ -128,16 +180,20 @@ DisplacementBounds::DisplacementBounds(const SubspaceBvh& bvh) : modes_(bvh.mode
   spread_.assign(static_cast<std::size_t>(node_count) * modes_, 0.0);
   frobenius_spread_.assign(node_count, 0.0);
   std::vector<int> seen(mesh.vertex_count(), -1);
+  affine_index_.assign(node_count, -1);
+  std::vector<int> vertices;
   for (int n = 0; n < node_count; ++n) {
     const SubspaceBvh::Node& node = bvh.nodes()[n];
     const auto mean = bvh.subspace_bound(n).mean_modes;
     double* spread = &spread_[static_cast<std::size_t>(n) * modes_];
+    vertices.clear();
     for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
       const int t = bvh.triangle_order()[i];
       clearance_[n] = std::min(clearance_[n], by_triangle[t]);
       for (int v : mesh.triangles()[t]) {
         if (seen[v] == n) continue;
         seen[v] = n;
+        vertices.push_back(v);
         double total = 0.0;
         for (int j = 0; j < modes_; ++j) {
           double squared = 0.0;
@@ -150,6 +206,13 @@ DisplacementBounds::DisplacementBounds(const SubspaceBvh& bvh) : modes_(bvh.mode
         }
         frobenius_spread_[n] = std::max(frobenius_spread_[n], std::sqrt(total));
       }
+    }
+    if (node.triangle_end - node.triangle_begin >= kSmallestAffineNode) {
+      affine_index_[n] = static_cast<int>(affine_residuals_.size()) / std::max(modes_, 1);
+      affine_maps_.resize(affine_maps_.size() + 9 * static_cast<std::size_t>(modes_));
+      affine_residuals_.resize(affine_residuals_.size() + modes_);
+      fit_affine(model, vertices, &affine_maps_[affine_maps_.size() - 9 * static_cast<std::size_t>(modes_)],
+                 &affine_residuals_[affine_residuals_.size() - modes_]);
     }
   }
   largest_basis_entry_ = Eigen::VectorXd::Zero(modes_);
@@ -201,7 +264,28 @@ const StepDisplacement::Centres& StepDisplacement::centres(int n) {
 
 bool StepDisplacement::node_apart(int n) {
   const double clearance = bounds_.clearance(n);
-  return clearance > 0.0 && (2.0 * reach(n) + margin_) * kSumSlack < clearance;
+  return clearance > 0.0 && ((2.0 * reach(n) + margin_) * kSumSlack < clearance || affine_apart(n));
+}
+
+bool StepDisplacement::affine_apart(int n) const {
+  const double* maps = bounds_.affine_maps(n);
+  if (!maps) return false;
+  const int r = static_cast<int>(q_hat0_.size());
+  const Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>> map(maps, 9, r);
+  const Eigen::Map<const Eigen::VectorXd> residual(bounds_.affine_residuals(n), r);
+  // ||A(q)||_F at each end, with the rounding of its r-term entries (gamma_{r+1} of their terms'
+  // magnitudes) added.
+  double stretch = 0.0, wander = 0.0;
+  for (const auto& [q, magnitude] : {std::pair{&q_hat0_, &magnitude0_}, std::pair{&q_hat1_, &magnitude1_}}) {
+    const Eigen::Matrix<double, 9, 1> entries = map * *q, terms = map.cwiseAbs() * *magnitude;
+    stretch = std::max(stretch, entries.stableNorm() + gamma(r + 1) * terms.stableNorm());
+#ifndef SSCC_MUTANT_AFFINE_NO_RESIDUAL
+    wander = std::max(wander, magnitude->dot(residual));
+#endif
+  }
+  stretch *= kSumSlack;
+  if (!(stretch < 1.0)) return false;
+  return (2.0 * wander + margin_) * kSumSlack * kSumSlack < (1.0 - stretch) * bounds_.clearance(n) / kSumSlack;
 }
 
 bool StepDisplacement::nodes_apart(int a, int b) {

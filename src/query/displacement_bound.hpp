@@ -27,6 +27,18 @@
 // does (dist_rest(T, T') is at least both triangles' clearances). Any two nodes, not only
 // siblings. Triangles touching at rest have clearance 0: nodes holding them are never culled.
 //
+// A node's motion about one translation includes its rotation, which moves far points a lot
+// and changes no gap. So a node of at least kSmallestAffineNode triangles also gets, per mode
+// j, a 3 x 3 matrix A_nj (a least-squares affine fit of the mode's displacements over the
+// node's vertices; any matrix would do) and rho_nj >= max_v ||U_v e_j - m_nj - A_nj (p_v - c_n)||
+// (m_nj: the mean displacement, c_n: the mean rest position). With A(t) = sum_j q_j(t) A_nj,
+// two points of the node move to
+//   x - y = (I + A(t)) (p_x - p_y) + (r_x - r_y),  ||r_x - r_y|| <= 2 sum_j |q_j(t)| rho_nj,
+// and ||(I + A) v|| >= (1 - ||A||_F) ||v||, so with a_n := max over the ends of ||A(q)||_F < 1
+// (a norm of a function linear in t: convex) and R_n := max over the ends of sum_j |q_j| rho_nj,
+//   (intra, affine) (1 - a_n) clearance(n) - 2 R_n > 0: no considered pair under n touches.
+// A linear field (a linearised rotation, a uniform strain) leaves no residual: only a_n counts.
+//
 // FLOATING POINT. The queries test the positions they compute, x~_v = fl(p_v + U_v q_hat),
 // moving linearly: each differs from the exact x_v(t) by at most
 //   E = sqrt(3) gamma_{r+1} (max |p| + sum_j max |U_.j| max(|q0_j|, |q1_j|))
@@ -65,6 +77,11 @@ class DisplacementBounds {
   const double* spread(int n) const { return &spread_[static_cast<std::size_t>(n) * modes_]; }
   /// >= max over node n's vertices v of ||U_v - C_n||_F.
   double frobenius_spread(int n) const { return frobenius_spread_[n]; }
+  /// Node n's affine fits, the 3 x 3 matrices A_nj as a 9 x r row-major block (entry (a, b) of
+  /// A_nj at [(3 a + b) r + j]), and their residual bounds rho_nj (r values); null for nodes
+  /// of fewer than kSmallestAffineNode triangles.
+  const double* affine_maps(int n) const;
+  const double* affine_residuals(int n) const;
   /// The largest absolute rest coordinate.
   double largest_rest_coordinate() const { return largest_rest_coordinate_; }
   /// Per mode j, the largest absolute entry of the scaled basis's column j.
@@ -75,9 +92,16 @@ class DisplacementBounds {
   std::vector<double> clearance_;
   std::vector<double> spread_;
   std::vector<double> frobenius_spread_;
+  std::vector<int> affine_index_;  // per node: its fits' index, -1 for none
+  std::vector<double> affine_maps_, affine_residuals_;
   double largest_rest_coordinate_ = 0.0;
   Eigen::VectorXd largest_basis_entry_;
 };
+
+/// Nodes with fewer triangles get no affine fit: their motion about one translation is
+/// small anyway (their size is a few triangles'), and 9 r numbers per node would dominate the
+/// memory of the fits. Lower: more memory and fits; higher: fewer nodes culled at large steps.
+inline constexpr int kSmallestAffineNode = 16;
 
 /// The cull for one step q_hat0 -> q_hat1 (scaled coordinates); nothing here outlives it.
 class StepDisplacement {
@@ -93,6 +117,8 @@ class StepDisplacement {
  private:
   /// D_n of the theorem, once per node.
   double reach(int n);
+  /// Whether the affine test culls node n.
+  bool affine_apart(int n) const;
   /// C_n q_hat at both ends, with the bound of their rounding, once per node.
   struct Centres {
     Eigen::Vector3d at0, at1;

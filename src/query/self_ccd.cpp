@@ -628,6 +628,11 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   return context.finish(start);
 }
 
+void SelfCcd::prepare(const SelfCcdOptions& options) const {
+  culls_->boundaries(options);
+  culls_->displacement(options, usable(certificates_.get(), options) != nullptr);
+}
+
 bool SelfCcd::root_certifies(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                              const SelfCcdOptions& options) const {
   const Certificates* certificates = usable(certificates_.get(), options);

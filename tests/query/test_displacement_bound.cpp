@@ -176,6 +176,34 @@ TEST_CASE(
   CHECK(colliding >= steps / 3);  // and the steps do collide
 }
 
+TEST_CASE("displacement bounds: a linear deformation short of collapsing the mesh is culled at the root",
+          "[displacement][query]") {
+  // Modes that are linear fields x -> B x: their affine fits leave no residual, so any step
+  // whose map stays within ||A||_F < 1 of the identity is decided at the root, and a step
+  // that flattens the sphere through itself is not culled.
+  const sscc::TriangleMesh sphere = sscc::test::uv_sphere(10, 16);
+  const Eigen::MatrixXd linear = sscc::polynomial_basis(sphere, 9);
+  const sscc::SubspaceModel model(sphere, linear, Eigen::VectorXd::Ones(9));
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd ccd(bvh);
+  REQUIRE(bvh.nodes()[0].triangle_end >= sscc::detail::kSmallestAffineNode);
+  sscc::SelfCcdOptions bounded;
+  bounded.use_certificates = false;
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd direction(9);
+  for (int k = 0; k < 9; ++k) direction[k] = normal(rng);
+  // The stretch a_n of the root grows linearly with the step's scale: find where it reaches 1.
+  int culled_at_root = 0;
+  for (double scale : {1e-3, 1e-2, 0.05, 0.1}) {
+    const Eigen::VectorXd q1 = scale * direction / direction.norm();
+    const sscc::SelfCcdReport report = ccd.query(Eigen::VectorXd::Zero(9), q1, bounded);
+    CHECK(report.pairs == ccd.query_exhaustive(Eigen::VectorXd::Zero(9), q1).pairs);
+    culled_at_root += report.stats.box_tests == 0 && report.stats.displacement_culled == 1;
+  }
+  CHECK(culled_at_root >= 2);
+}
+
 TEST_CASE("displacement bounds: not applied with certificates, nor when switched off", "[displacement][query]") {
   const sscc::SubspaceModel model = mixed_model(sscc::test::parallel_sheets(6, 0.05), 9, 2, 4);
   const sscc::SubspaceBvh bvh(model);

@@ -54,7 +54,10 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
     options[kCones].use_normal_cones = true;
     set_traditional(options[kBounds]);
     options[kBounds].use_displacement_bounds = true;
-    for (SelfCcdOptions& each : options) each.threads = 1;
+    for (SelfCcdOptions& each : options) {
+      each.threads = 1;
+      ccd.prepare(each);  // precomputation, as the certificates: not timed
+    }
     FclSelfCcd fcl(model.mesh(), model.excluded_pairs());
     for (double amplitude : o.amplitudes) {
       progress << "self-CCD table: " << mesh << " amplitude " << amplitude << '\n';
