@@ -31,7 +31,10 @@ int cmp(const FixedInt& a, const FixedInt& b) {
   return a.size_ >= 0 ? s : -s;
 }
 
-FixedInt operator+(const FixedInt& a, const FixedInt& b) {
+FixedInt FixedInt::add(const FixedInt& a, const FixedInt& b_unsigned, bool subtract) {
+  FixedInt negated;
+  if (subtract) negated = -b_unsigned;
+  const FixedInt& b = subtract ? negated : b_unsigned;
   if (b.size_ == 0) return a;
   if (a.size_ == 0) return b;
   const FixedInt* big = &a;
@@ -60,7 +63,7 @@ FixedInt operator+(const FixedInt& a, const FixedInt& b) {
   return r;
 }
 
-FixedInt operator*(const FixedInt& a, const FixedInt& b) {
+FixedInt FixedInt::multiply(const FixedInt& a, const FixedInt& b) {
   FixedInt r;
   if (a.size_ == 0 || b.size_ == 0) return r;
   const FixedInt* big = &a;
@@ -73,7 +76,7 @@ FixedInt operator*(const FixedInt& a, const FixedInt& b) {
   return r;
 }
 
-FixedInt operator<<(const FixedInt& x, unsigned long bits) {
+FixedInt FixedInt::shift_left(const FixedInt& x, unsigned long bits) {
   if (x.size_ == 0) return x;
   const unsigned long whole = bits / kLimbBits;
   const unsigned partial = static_cast<unsigned>(bits % kLimbBits);

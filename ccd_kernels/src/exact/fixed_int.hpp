@@ -17,6 +17,8 @@
 
 namespace sscc::ccd::exact_stage {
 
+__extension__ typedef unsigned __int128 FixedIntWide;  // two limbs: single-limb products and sums
+
 /// Limbs of a FixedInt: 1024 bits. Wider means fewer queries redone with GMP, but every
 /// coefficient is copied at this size.
 inline constexpr int kFixedIntLimbs = 16;
@@ -43,10 +45,29 @@ class FixedInt {
     r.size_ = -r.size_;
     return r;
   }
-  friend FixedInt operator+(const FixedInt& a, const FixedInt& b);
-  friend FixedInt operator-(const FixedInt& a, const FixedInt& b) { return a + (-b); }
-  friend FixedInt operator*(const FixedInt& a, const FixedInt& b);
-  friend FixedInt operator<<(const FixedInt& x, unsigned long bits);
+  // Operands of one limb, the common case, take an inline path on two-limb integers.
+  friend FixedInt operator+(const FixedInt& a, const FixedInt& b) {
+    if (a.single_limb() && b.single_limb()) return add_single(a, b.size_ < 0, b);
+    return add(a, b, false);
+  }
+  friend FixedInt operator-(const FixedInt& a, const FixedInt& b) {
+    if (a.single_limb() && b.single_limb()) return add_single(a, b.size_ > 0, b);
+    return add(a, b, true);
+  }
+  friend FixedInt operator*(const FixedInt& a, const FixedInt& b) {
+    if (a.single_limb() && b.single_limb()) {
+      if (a.size_ == 0 || b.size_ == 0) return FixedInt();
+      return from_wide(static_cast<FixedIntWide>(a.limbs_[0]) * b.limbs_[0], (a.size_ < 0) != (b.size_ < 0));
+    }
+    return multiply(a, b);
+  }
+  friend FixedInt operator<<(const FixedInt& x, unsigned long bits) {
+    if (x.single_limb() && bits < kWideShiftLimit) {
+      if (x.size_ == 0) return x;
+      return from_wide(static_cast<FixedIntWide>(x.limbs_[0]) << bits, x.size_ < 0);
+    }
+    return shift_left(x, bits);
+  }
   /// x / 2^bits; precondition: exact (the low `bits` bits of x are zero).
   friend FixedInt exact_shift_right(const FixedInt& x, unsigned long bits);
   /// Index of the lowest set bit; precondition: x is not zero.
@@ -73,6 +94,29 @@ class FixedInt {
  private:
   /// A read-only mpz view of the limbs (valid while `this` is).
   mpz_srcptr view(mpz_t storage) const;
+  /// Shifts of a single limb by fewer bits than this stay within two limbs.
+  static constexpr unsigned long kWideShiftLimit = GMP_NUMB_BITS;
+  bool single_limb() const { return size_ >= -1 && size_ <= 1; }
+  static FixedInt from_wide(FixedIntWide magnitude, bool negative) {
+    FixedInt r;
+    r.limbs_[0] = static_cast<mp_limb_t>(magnitude);
+    r.limbs_[1] = static_cast<mp_limb_t>(magnitude >> GMP_NUMB_BITS);
+    const int n = r.limbs_[1] != 0 ? 2 : r.limbs_[0] != 0 ? 1 : 0;
+    r.size_ = negative ? -n : n;
+    return r;
+  }
+  /// a + b, or a - b when `b_negative` is the opposite of b's sign; both single limbs.
+  static FixedInt add_single(const FixedInt& a, bool b_negative, const FixedInt& b) {
+    const FixedIntWide x = a.size_ == 0 ? 0 : a.limbs_[0];
+    const FixedIntWide y = b.size_ == 0 ? 0 : b.limbs_[0];
+    const bool a_negative = a.size_ < 0;
+    if (a_negative == b_negative) return from_wide(x + y, a_negative);
+    return x >= y ? from_wide(x - y, a_negative) : from_wide(y - x, b_negative);
+  }
+  /// a + b, or a - b when `subtract`; any sizes.
+  static FixedInt add(const FixedInt& a, const FixedInt& b, bool subtract);
+  static FixedInt multiply(const FixedInt& a, const FixedInt& b);
+  static FixedInt shift_left(const FixedInt& x, unsigned long bits);
   int magnitude_size() const { return size_ < 0 ? -size_ : size_; }
 
   void normalize(int limbs, bool negative);

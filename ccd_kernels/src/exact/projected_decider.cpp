@@ -13,33 +13,41 @@ namespace {
 
 using exact_stage::DyadicRoot;
 using exact_stage::FixedInt;
+using exact_stage::get_d_2exp;
 using exact_stage::IntegerPolynomial;
 template <class Int>
 using PolyVec3 = std::array<IntegerPolynomial<Int>, 3>;
 
-/// The motion's coordinates as integers: each double is m 2^e with an integer |m| < 2^53,
-/// so multiplying all of them by 2^-(smallest e) makes every one an integer, exactly.
-/// Contact does not change under a common positive scaling.
+/// A non-zero double as m 2^e with an odd integer m (|m| < 2^53).
+struct OddMantissa {
+  long m;
+  int e;
+};
+OddMantissa odd_mantissa(double x) {
+  int e = 0;
+  // x = f 2^e with f in [0.5, 1): f 2^53 is an integer; its trailing zeros go to e.
+  long m = static_cast<long>(std::ldexp(std::frexp(x, &e), 53));
+  const int zeros = __builtin_ctzl(static_cast<unsigned long>(m));
+  return {m >> zeros, e - 53 + zeros};
+}
+
+/// The motion's coordinates as integers: each double is m 2^e with an odd integer m, so
+/// multiplying all of them by 2^-(smallest e) makes every one an integer, exactly, and
+/// the smallest they can be (grid coordinates stay a few bits wide). Contact does not
+/// change under a common positive scaling.
 template <class Int>
 std::array<PolyVec3<Int>, 4> integer_trajectories(const FourPointMotion& motion) {
   int smallest = INT_MAX;
-  const auto exponent_of = [](double x) {
-    int e = 0;
-    std::frexp(x, &e);  // x = f 2^e, f in [0.5, 1): m = f 2^53 is an integer
-    return e - 53;
-  };
   for (int i = 0; i < 4; ++i) {
     for (int k = 0; k < 3; ++k) {
-      if (motion.t0[i][k] != 0.0) smallest = std::min(smallest, exponent_of(motion.t0[i][k]));
-      if (motion.t1[i][k] != 0.0) smallest = std::min(smallest, exponent_of(motion.t1[i][k]));
+      if (motion.t0[i][k] != 0.0) smallest = std::min(smallest, odd_mantissa(motion.t0[i][k]).e);
+      if (motion.t1[i][k] != 0.0) smallest = std::min(smallest, odd_mantissa(motion.t1[i][k]).e);
     }
   }
   const auto to_integer = [&](double x) {
     if (x == 0.0) return Int(0);
-    const int e = exponent_of(x);
-    int unused = 0;
-    const Int mantissa(static_cast<long>(std::ldexp(std::frexp(x, &unused), 53)));
-    return Int(mantissa << static_cast<unsigned long>(e - smallest));
+    const OddMantissa odd = odd_mantissa(x);
+    return Int(Int(odd.m) << static_cast<unsigned long>(odd.e - smallest));
   };
   std::array<PolyVec3<Int>, 4> x;
   for (int i = 0; i < 4; ++i) {
@@ -83,7 +91,29 @@ struct Conditions {
   std::array<PolyVec3<Int>, 4> x;  ///< the trajectories, for between_conditions
   IntegerPolynomial<Int> coplanarity;
   std::array<PlaneConditions<Int>, 3> planes;
+  /// The primitives' normal: the triangle's (vertex-face) or edge a x edge b (edge-edge).
+  PolyVec3<Int> normal;
+  /// Axes by decreasing size of the normal's component at the ends of the step: only an
+  /// order of trial.
+  std::array<int, 3> plane_order;
 };
+
+/// The axes by decreasing bit length of the normal's components at t = 0 and t = 1.
+template <class Int>
+std::array<int, 3> plane_order(const PolyVec3<Int>& normal) {
+  long size[3] = {0, 0, 0};
+  for (int k = 0; k < 3; ++k) {
+    const std::array<Int, exact_stage::kMaxDegree + 1>& c = normal[k].c;
+    for (const Int& value : {c[0], Int(c[0] + c[1] + c[2] + c[3])}) {
+      long bits = 0;
+      get_d_2exp(bits, value);  // the bit length of |value| (0 for zero)
+      size[k] = std::max(size[k], bits);
+    }
+  }
+  std::array<int, 3> order = {0, 1, 2};
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
+  return order;
+}
 
 /// In the coordinate plane that drops axis k, polynomials <= 0 where a point lies between
 /// two others on their line. Only planes whose orientations all vanish need them, so they
@@ -98,7 +128,7 @@ std::vector<IntegerPolynomial<Int>> between_conditions(const Conditions<Int>& c,
 
 template <class Int>
 Conditions<Int> build_conditions(const FourPointMotion& motion) {
-  Conditions<Int> c{motion.pair, integer_trajectories<Int>(motion), {}, {}};
+  Conditions<Int> c{motion.pair, integer_trajectories<Int>(motion), {}, {}, {}, {0, 1, 2}};
   const std::array<PolyVec3<Int>, 4>& x = c.x;
   const PolyVec3<Int> e1 = x[1] - x[0];
   const PolyVec3<Int> e2 = x[2] - x[0];
@@ -107,6 +137,8 @@ Conditions<Int> build_conditions(const FourPointMotion& motion) {
   const PolyVec3<Int> k13 = cross(e1, e3);
   const PolyVec3<Int> k23 = cross(e2, e3);
   c.coplanarity = k12[0] * e3[0] + k12[1] * e3[1] + k12[2] * e3[2];
+  c.normal = motion.pair == PrimitivePair::kVertexFace ? k12 : k13 - k12;  // e1 x (e3 - e2) for edge-edge
+  c.plane_order = plane_order(c.normal);
   for (int k = 0; k < 3; ++k) {
     PlaneConditions<Int>& plane = c.planes[k];
     const IntegerPolynomial<Int> mixed = k12[k] + k23[k] - k13[k];
@@ -130,23 +162,35 @@ bool any_between(const Conditions<Int>& c, int k, DyadicRoot<Int>& t) {
 template <class Int>
 bool touch_in_plane(const Conditions<Int>& c, int k, DyadicRoot<Int>& t) {
   const PlaneConditions<Int>& plane = c.planes[k];
+  // Signs in order, stopping as soon as they separate the primitives in this plane.
   int s[4] = {0, 0, 0, 0};
-  bool all_zero = true;
-  for (std::size_t i = 0; i < plane.orientations.size(); ++i) {
-    s[i] = exact_stage::sign_at_root(plane.orientations[i], t);
-    all_zero = all_zero && s[i] == 0;
-  }
-  if (all_zero) return any_between(c, k, t);  // everything on one line in this plane
+  const auto sign = [&](int i) { return s[i] = exact_stage::sign_at_root(plane.orientations[i], t); };
   if (c.pair == PrimitivePair::kVertexFace) {
-    const bool has_positive = s[0] > 0 || s[1] > 0 || s[2] > 0;
-    const bool has_negative = s[0] < 0 || s[1] < 0 || s[2] < 0;
-    return !(has_positive && has_negative);
+    bool has_positive = false;
+    bool has_negative = false;
+    for (int i = 0; i < 3; ++i) {
+      const int si = sign(i);
+      has_positive = has_positive || si > 0;
+      has_negative = has_negative || si < 0;
+      if (has_positive && has_negative) return false;
+    }
+  } else {
+    if (sign(0) * sign(1) > 0) return false;
+    if (sign(2) * sign(3) > 0) return false;
   }
-  return s[0] * s[1] <= 0 && s[2] * s[3] <= 0;
+  const bool all_zero = s[0] == 0 && s[1] == 0 && s[2] == 0 && s[3] == 0;
+  return all_zero ? any_between(c, k, t) : true;  // all zero: everything on one line in this plane
 }
 
 template <class Int>
 bool touch_at(const Conditions<Int>& c, DyadicRoot<Int>& t) {
+  // A plane whose axis the normal is not perpendicular to projects the primitives' common
+  // plane one-to-one (the four points are coplanar at t), so its test alone decides.
+  for (int k : c.plane_order) {
+    if (exact_stage::sign_at_root(c.normal[k], t) != 0) return touch_in_plane(c, k, t);
+  }
+  // Degenerate primitives or parallel edges: every projection is a necessary condition,
+  // and together they are sufficient.
   for (int k = 0; k < 3; ++k) {
     if (!touch_in_plane(c, k, t)) return false;
   }
