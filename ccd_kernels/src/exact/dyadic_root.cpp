@@ -142,6 +142,9 @@ int bisect_with(DyadicRoot<Int>& root, Bernstein<Int>* companion) {
 /// a step whatever happens; Newton doubles the bits once close enough, which is what
 /// roots 2^-1000 apart (coordinates of very different magnitudes) need.
 constexpr int kBisectionsPerNewtonStep = 16;
+/// How far below the piece's own depth a gallop looks (bits): beyond the doubling of the
+/// depth that Newton would reach.
+constexpr unsigned long kMaxGallopBits = 64;
 /// Narrowings tried before the gcd that tests whether a sign is exactly zero: a non-zero
 /// sign usually shows within a few (additions only), the gcd costs coefficient gcds.
 constexpr int kNarrowingsBeforeZeroTest = 6;
@@ -187,13 +190,49 @@ bool newton_step(DyadicRoot<Int>& root) {
   return true;
 }
 
-/// Narrows the root's piece: a bisection, or every few steps a Newton step. `companion`
-/// (another polynomial's coefficients on the piece) follows. Returns the companion's sign
-/// at the root when the root turns out exact, else 2.
+/// Moves the root's piece to its first or last 2^-j part, for the largest j in 2, 4, 8, ...
+/// that still holds the root (the signs at the part's inner end prove it). A root far
+/// closer to an end of its piece than the piece is wide (coordinates of very different
+/// magnitudes) is reached in a few doublings of j, where bisection would take one step per
+/// bit and Newton, from the middle of a piece where a higher power of t dominates, gains
+/// only a bit per step as well. Returns false, changing nothing, when no part holds it.
+template <class Int>
+bool gallop_to_end(DyadicRoot<Int>& root) {
+  const IntegerPolynomial<Int>& p = root.polynomial;
+  for (const bool left : {true, false}) {
+    unsigned long best = 0;
+    for (unsigned long j = 2; j <= root.start.k + kMaxGallopBits; j *= 2) {
+      // The inner end of the part: start + 2^-(k + j) or end - 2^-(k + j).
+      const Dyadic<Int> inner{
+          left ? Int((root.start.a << j) + Int(1)) : Int((Int(root.start.a + Int(1)) << j) - Int(1)), root.start.k + j};
+      const int s = sign_at(p, inner);
+      if (s == 0) {
+        root.start = inner;
+        root.exact = true;
+        return true;
+      }
+      // The root is inside the part when the sign changes across it.
+      if ((s != root.sign_at_start) != left) break;
+      best = j;
+    }
+    if (best == 0) continue;
+    root.start = left ? Dyadic<Int>{Int(root.start.a << best), root.start.k + best}
+                      : Dyadic<Int>{Int((Int(root.start.a + Int(1)) << best) - Int(1)), root.start.k + best};
+    // The left part keeps the old start; the right part starts where the sign was checked.
+    root.on_piece = bernstein_on_piece(p, root.start);
+    return true;
+  }
+  return false;
+}
+
+/// Narrows the root's piece: a bisection, or every few steps a Newton step (or, where that
+/// fails, a gallop to an end of the piece). `companion` (another polynomial's coefficients
+/// on the piece) follows. Returns the companion's sign at the root when the root turns out
+/// exact, else 2.
 template <class Int>
 int narrow(DyadicRoot<Int>& root, int& steps, const IntegerPolynomial<Int>* companion_polynomial,
            Bernstein<Int>* companion) {
-  if (++steps % kBisectionsPerNewtonStep == 0 && newton_step(root)) {
+  if (++steps % kBisectionsPerNewtonStep == 0 && (newton_step(root) || gallop_to_end(root))) {
     if (root.exact) return companion ? sign_at(*companion_polynomial, root.start) : 2;
     if (companion) *companion = bernstein_on_piece(*companion_polynomial, root.start);
     return 2;

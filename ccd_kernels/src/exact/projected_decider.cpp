@@ -211,11 +211,24 @@ std::optional<DyadicRoot<Int>> first_contact_root(const Conditions<Int>& c) {
   // resting contact) before any root is isolated.
   DyadicRoot<Int> start = exact_stage::exact_root(exact_stage::Dyadic<Int>{0, 0});
   if (touch_at(c, start)) return start;
+  // Where one projection is one-to-one on the common plane over the whole step (the
+  // normal's component along its axis never vanishes in [0, 1]), contact is that plane's
+  // test alone, on its orientations alone (they cannot all vanish there), so the contact
+  // set can only begin at their roots.
+  int one_to_one = -1;
+  for (int k : c.plane_order) {
+    if (!c.normal[k].is_zero() && exact_stage::roots_in_unit_interval(c.normal[k]).empty()) {
+      one_to_one = k;
+      break;
+    }
+  }
   // Each distinct polynomial once (up to sign and scale, the same roots): projections onto
   // planes the motion is perpendicular to repeat one another.
   std::vector<IntegerPolynomial<Int>> distinct;
   for (int k = 0; k < 3; ++k) {
-    const std::vector<IntegerPolynomial<Int>> between = between_conditions(c, k);
+    if (one_to_one >= 0 && k != one_to_one) continue;
+    const std::vector<IntegerPolynomial<Int>> between =
+        one_to_one >= 0 ? std::vector<IntegerPolynomial<Int>>() : between_conditions(c, k);
     for (const auto* list : {&c.planes[k].orientations, &between}) {
       for (const IntegerPolynomial<Int>& p : *list) {
         if (p.degree <= 0) continue;
