@@ -192,8 +192,26 @@ template <class Int>
 IntegerPolynomial<Int> squarefree_part(const IntegerPolynomial<Int>& p) {
   const IntegerPolynomial<Int> slope = derivative(p);
   IntegerPolynomial<Int> result = p;
-  // Lines are square-free, and so are quadratics with a non-zero discriminant.
-  const bool squarefree = p.degree <= 1 || (p.degree == 2 && sgn(Int(p.c[1] * p.c[1] - Int(4) * p.c[0] * p.c[2])) != 0);
+  // Lines are square-free, and so are quadratics and cubics with a non-zero discriminant
+  // (a few products, where the gcd with the derivative takes pseudo-divisions and gcds).
+  bool squarefree = p.degree <= 1;
+  if (p.degree == 2) {
+    const Int& a = p.c[2];
+    const Int& b = p.c[1];
+    const Int& c = p.c[0];
+    squarefree = sgn(Int(b * b - Int(4) * a * c)) != 0;
+  } else if (p.degree == 3) {
+    // 18abcd - 4b^3 d + b^2 c^2 - 4a c^3 - 27 a^2 d^2 for a t^3 + b t^2 + c t + d.
+    const Int& a = p.c[3];
+    const Int& b = p.c[2];
+    const Int& c = p.c[1];
+    const Int& d = p.c[0];
+    const Int bc = b * c;
+    const Int ad = a * d;
+    squarefree =
+        sgn(Int(Int(18) * bc * ad - Int(4) * b * b * b * d + bc * bc - Int(4) * a * c * c * c - Int(27) * ad * ad)) !=
+        0;
+  }
   if (!squarefree && !slope.is_zero()) {
     const IntegerPolynomial<Int> common = gcd(p, slope);
     if (common.degree >= 1) {

@@ -32,29 +32,32 @@ OddMantissa odd_mantissa(double x) {
 }
 
 /// The motion's coordinates as integers: each double is m 2^e with an odd integer m, so
-/// multiplying all of them by 2^-(smallest e) makes every one an integer, exactly, and
-/// the smallest they can be (grid coordinates stay a few bits wide). Contact does not
-/// change under a common positive scaling.
+/// multiplying all coordinates along one axis by 2^-(their smallest e) makes every one an
+/// integer, exactly, and the smallest they can be (grid coordinates stay a few bits wide).
+/// Contact does not change under a positive scaling of each axis (an invertible linear map
+/// maps triangles, segments and linear motions to the same, and keeps their intersections),
+/// so a tiny offset along one axis (a subnormal z on an otherwise flat query) does not
+/// widen the integers of the others.
 template <class Int>
 std::array<PolyVec3<Int>, 4> integer_trajectories(const FourPointMotion& motion) {
-  int smallest = INT_MAX;
+  int smallest[3] = {INT_MAX, INT_MAX, INT_MAX};
   for (int i = 0; i < 4; ++i) {
     for (int k = 0; k < 3; ++k) {
-      if (motion.t0[i][k] != 0.0) smallest = std::min(smallest, odd_mantissa(motion.t0[i][k]).e);
-      if (motion.t1[i][k] != 0.0) smallest = std::min(smallest, odd_mantissa(motion.t1[i][k]).e);
+      if (motion.t0[i][k] != 0.0) smallest[k] = std::min(smallest[k], odd_mantissa(motion.t0[i][k]).e);
+      if (motion.t1[i][k] != 0.0) smallest[k] = std::min(smallest[k], odd_mantissa(motion.t1[i][k]).e);
     }
   }
-  const auto to_integer = [&](double x) {
+  const auto to_integer = [&](double x, int k) {
     if (x == 0.0) return Int(0);
     const OddMantissa odd = odd_mantissa(x);
-    return Int(Int(odd.m) << static_cast<unsigned long>(odd.e - smallest));
+    return Int(Int(odd.m) << static_cast<unsigned long>(odd.e - smallest[k]));
   };
   std::array<PolyVec3<Int>, 4> x;
   for (int i = 0; i < 4; ++i) {
     for (int k = 0; k < 3; ++k) {
-      const Int start = to_integer(motion.t0[i][k]);
+      const Int start = to_integer(motion.t0[i][k], k);
       x[i][k].c[0] = start;
-      x[i][k].c[1] = to_integer(motion.t1[i][k]) - start;
+      x[i][k].c[1] = to_integer(motion.t1[i][k], k) - start;
       x[i][k].trim();
     }
   }
