@@ -1,5 +1,6 @@
 #include "exact/dyadic_root.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <utility>
@@ -145,15 +146,18 @@ constexpr int kBisectionsPerNewtonStep = 16;
 /// How far below the piece's own depth a gallop looks (bits): beyond the doubling of the
 /// depth that Newton would reach.
 constexpr unsigned long kMaxGallopBits = 64;
+/// The fewest bits a Newton step aims for: the bisections between two attempts gain as many.
+constexpr unsigned long kMinNewtonGain = static_cast<unsigned long>(kBisectionsPerNewtonStep);
 /// Narrowings tried before the gcd that tests whether a sign is exactly zero: a non-zero
 /// sign usually shows within a few (additions only), the gcd costs coefficient gcds.
 constexpr int kNarrowingsBeforeZeroTest = 6;
 
-/// One Newton step from the piece's midpoint to twice its bits, kept only when the signs of
-/// the polynomial on both sides of the new estimate (one unit of the finer grid away)
-/// prove the root is there. Returns false, changing nothing, when they do not.
+/// One Newton step from the piece's midpoint to a grid `gain` bits finer (at most twice the
+/// bits), kept only when the signs of the polynomial on both sides of the new estimate (one
+/// unit of the finer grid away) prove the root is there. Returns false, changing nothing,
+/// when they do not.
 template <class Int>
-bool newton_step(DyadicRoot<Int>& root) {
+bool newton_step(DyadicRoot<Int>& root, unsigned long gain) {
   const IntegerPolynomial<Int>& p = root.polynomial;
   const IntegerPolynomial<Int> slope = derivative(p);
   const Dyadic<Int> mid = right_child(root.start);
@@ -161,7 +165,7 @@ bool newton_step(DyadicRoot<Int>& root) {
   const Int slope_value = scaled_value(slope, mid);  // p'(x) 2^(k1 (d - 1))
   if (sgn(slope_value) == 0) return false;
   // x - p(x) / p'(x) on the grid 2^-fine: p / p' = value / (slope_value 2^k1).
-  const unsigned long fine = 2 * mid.k;
+  const unsigned long fine = mid.k + (gain == 0 ? mid.k : std::min(gain, mid.k));
   const Int step = Int(value << (fine - mid.k)) / slope_value;
   const Dyadic<Int> estimate{Int(mid.a << (fine - mid.k)) - step, fine};
   const Dyadic<Int> below{Int(estimate.a - Int(1)), fine};
@@ -225,6 +229,18 @@ bool gallop_to_end(DyadicRoot<Int>& root) {
   return false;
 }
 
+/// A Newton step with the root's current gain, which it then adapts.
+template <class Int>
+bool newton_step_adapting(DyadicRoot<Int>& root) {
+  const unsigned long gain = root.newton_gain == 0 ? root.start.k + 1 : root.newton_gain;
+  if (newton_step(root, gain)) {
+    root.newton_gain = 2 * gain;
+    return true;
+  }
+  root.newton_gain = std::max(kMinNewtonGain, gain / 2);
+  return false;
+}
+
 /// Narrows the root's piece: a bisection, or every few steps a Newton step (or, where that
 /// fails, a gallop to an end of the piece). `companion` (another polynomial's coefficients
 /// on the piece) follows. Returns the companion's sign at the root when the root turns out
@@ -232,7 +248,7 @@ bool gallop_to_end(DyadicRoot<Int>& root) {
 template <class Int>
 int narrow(DyadicRoot<Int>& root, int& steps, const IntegerPolynomial<Int>* companion_polynomial,
            Bernstein<Int>* companion) {
-  if (++steps % kBisectionsPerNewtonStep == 0 && (newton_step(root) || gallop_to_end(root))) {
+  if (++steps % kBisectionsPerNewtonStep == 0 && (newton_step_adapting(root) || gallop_to_end(root))) {
     if (root.exact) return companion ? sign_at(*companion_polynomial, root.start) : 2;
     if (companion) *companion = bernstein_on_piece(*companion_polynomial, root.start);
     return 2;

@@ -24,6 +24,11 @@ struct DyadicRoot {
   /// `polynomial` on the piece, when not exact: narrowing splits it (additions and shifts)
   /// rather than evaluating at the midpoint (products of long integers).
   Bernstein<Int> on_piece;
+  /// Bits the next Newton step aims to add (0: as many as the piece has). Halved past each
+  /// failure, doubled after each success: where the polynomial curves strongly (|p''/p'|
+  /// huge, coefficients of very different magnitudes) Newton gains fewer bits than the
+  /// piece has, long before it gains as many.
+  unsigned long newton_gain = 0;
 };
 
 /// The distinct real roots of p in the closed interval [0, 1], in increasing order.
