@@ -49,6 +49,10 @@ bool common_root_in_piece(const IntegerPolynomial<Int>& common, const Dyadic<Int
   return common.degree >= 1 && sign_at(common, lo) * sign_at(common, hi) < 0;
 }
 
+/// Pieces the isolation stack holds without growing: one per level of a cubic's usual
+/// isolation depth (it grows past that, rarely).
+constexpr std::size_t kIsolationStackReserve = 16;
+
 /// Depth-first subdivision of [0, 1], left first, so roots come out in increasing order.
 template <class Int>
 struct IsolationStep {
@@ -56,6 +60,47 @@ struct IsolationStep {
   Dyadic<Int> start;
   bool emit_exact_start = false;  ///< emit an exact root at `start` before this piece
 };
+
+/// How far below the piece's own depth a gallop looks (bits): beyond the doubling of the
+/// depth that Newton would reach.
+constexpr unsigned long kMaxGallopBits = 64;
+
+/// Isolation deeper than this many levels means roots close together or close to a piece's
+/// end, relative to its width (coordinates of very different magnitudes): only then does
+/// isolation try to gallop, as the Bernstein coefficients it takes would slow the common case.
+constexpr unsigned long kIsolationGallopDepth = 16;
+/// Levels between two gallop attempts of one chain of pieces: an attempt costs a few
+/// bisections, and fails where roots cluster inside a piece rather than at an end.
+constexpr unsigned long kIsolationGallopEvery = 8;
+
+/// Moves an isolation piece to its first or last 2^-j part, for the largest j in 2, 4, 8, ...
+/// such that the rest of the piece provably holds no root of q: q is non-zero where the
+/// part ends and its Bernstein coefficients on the rest have no sign change (Descartes).
+/// A root at the piece's outer end is found by whoever owns that end (as for bisection).
+/// Returns false, changing nothing, when no such part exists.
+template <class Int>
+bool gallop_isolation(const IntegerPolynomial<Int>& q, IsolationStep<Int>& step) {
+  const Dyadic<Int>& s = step.start;
+  for (const bool left : {true, false}) {
+    unsigned long best = 0;
+    for (unsigned long j = 2; j <= s.k + kMaxGallopBits; j *= 2) {
+      // The part's inner end, and the rest of the piece in units of 2^-(k + j).
+      const Int scale = Int(1) << j;
+      const Dyadic<Int> inner{left ? Int((s.a << j) + Int(1)) : Int((Int(s.a + Int(1)) << j) - Int(1)), s.k + j};
+      if (sign_at(q, inner) == 0) break;
+      const Dyadic<Int> rest_start = left ? inner : Dyadic<Int>{Int(s.a << j), s.k + j};
+      if (sign_variations(bernstein_on_interval(q, rest_start, Int(scale - Int(1)))) != 0) break;
+      best = j;
+    }
+    if (best == 0) continue;
+    step.start = left ? Dyadic<Int>{Int(s.a << best), s.k + best}
+                      : Dyadic<Int>{Int((Int(s.a + Int(1)) << best) - Int(1)), s.k + best};
+    step.b = bernstein_on_piece(q, step.start);
+    step.emit_exact_start = false;  // emitted when the piece was first taken
+    return true;
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -86,6 +131,7 @@ std::vector<DyadicRoot<Int>> roots_in_unit_interval(const IntegerPolynomial<Int>
   const Dyadic<Int> one{1, 0};
   if (sign_at(q, zero) == 0) emit_exact(zero);
   std::vector<IsolationStep<Int>> stack;
+  stack.reserve(kIsolationStackReserve);
   stack.push_back({bernstein_on_piece(q, zero), zero, false});
   while (!stack.empty()) {
     IsolationStep<Int> step = std::move(stack.back());
@@ -100,6 +146,11 @@ std::vector<DyadicRoot<Int>> roots_in_unit_interval(const IntegerPolynomial<Int>
       r.sign_at_start = sgn(step.b[0]);
       r.on_piece = std::move(step.b);
       roots.push_back(std::move(r));
+      continue;
+    }
+    if (step.start.k >= kIsolationGallopDepth && step.start.k % kIsolationGallopEvery == 0 &&
+        gallop_isolation(q, step)) {
+      stack.push_back(std::move(step));
       continue;
     }
     IsolationStep<Int> left{{}, left_child(step.start), false};
@@ -143,15 +194,11 @@ int bisect_with(DyadicRoot<Int>& root, Bernstein<Int>* companion) {
 /// a step whatever happens; Newton doubles the bits once close enough, which is what
 /// roots 2^-1000 apart (coordinates of very different magnitudes) need.
 constexpr int kBisectionsPerNewtonStep = 16;
-/// How far below the piece's own depth a gallop looks (bits): beyond the doubling of the
-/// depth that Newton would reach.
-constexpr unsigned long kMaxGallopBits = 64;
 /// The fewest bits a Newton step aims for: the bisections between two attempts gain as many.
 constexpr unsigned long kMinNewtonGain = static_cast<unsigned long>(kBisectionsPerNewtonStep);
 /// Narrowings tried before the gcd that tests whether a sign is exactly zero: a non-zero
 /// sign usually shows within a few (additions only), the gcd costs coefficient gcds.
 constexpr int kNarrowingsBeforeZeroTest = 6;
-
 /// One Newton step from the piece's midpoint to a grid `gain` bits finer (at most twice the
 /// bits), kept only when the signs of the polynomial on both sides of the new estimate (one
 /// unit of the finer grid away) prove the root is there. Returns false, changing nothing,

@@ -30,7 +30,9 @@ struct FixedIntOverflow : std::exception {
 
 class FixedInt {
  public:
-  FixedInt() = default;
+  // User-provided, so that value-initialization (`T()`, `{}`) sets the size alone rather
+  // than zeroing every limb.
+  FixedInt() {}          // NOLINT(modernize-use-equals-default)
   FixedInt(long value);  // NOLINT(google-explicit-constructor): integer literals mix in as with mpz_class
 
   friend int sgn(const FixedInt& x) { return (x.size_ > 0) - (x.size_ < 0); }

@@ -64,15 +64,21 @@ IntegerPolynomial<Int> derivative(const IntegerPolynomial<Int>& p) {
 
 template <class Int>
 Bernstein<Int> bernstein_on_piece(const IntegerPolynomial<Int>& p, const Dyadic<Int>& piece_start) {
-  // q(s) = 2^(3k) p((a + s) / 2^k) for s in [0, 1], by Horner in polynomials of s.
+  return bernstein_on_interval(p, piece_start, Int(1));
+}
+
+template <class Int>
+Bernstein<Int> bernstein_on_interval(const IntegerPolynomial<Int>& p, const Dyadic<Int>& start, const Int& units) {
+  // q(s) = 2^(3k) p((a + u s) / 2^k) for s in [0, 1], by Horner in polynomials of s.
+  const bool unit = units == Int(1);
   std::array<Int, kMaxDegree + 1> q;
   for (Int& x : q) x = 0;
   for (int i = kMaxDegree; i >= 0; --i) {
     for (int j = kMaxDegree; j >= 0; --j) {
-      q[j] *= piece_start.a;
-      if (j > 0) q[j] += q[j - 1];
+      q[j] *= start.a;
+      if (j > 0) q[j] += unit ? q[j - 1] : Int(units * q[j - 1]);
     }
-    q[0] += p.c[i] << (piece_start.k * static_cast<unsigned long>(kMaxDegree - i));
+    q[0] += p.c[i] << (start.k * static_cast<unsigned long>(kMaxDegree - i));
   }
   // Bernstein coefficients of a cubic, times 3: b_j = sum_i C(j, i) (3 / C(3, i)) q_i.
   Bernstein<Int> b;
@@ -223,19 +229,20 @@ IntegerPolynomial<Int> squarefree_part(const IntegerPolynomial<Int>& p) {
   return result;
 }
 
-#define SSCC_INSTANTIATE_INTEGER_POLYNOMIAL(Int)                                                           \
-  template IntegerPolynomial<Int> operator+(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&); \
-  template IntegerPolynomial<Int> operator-(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&); \
-  template IntegerPolynomial<Int> operator-(const IntegerPolynomial<Int>&);                                \
-  template IntegerPolynomial<Int> operator*(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&); \
-  template Int scaled_value(const IntegerPolynomial<Int>&, const Dyadic<Int>&);                            \
-  template IntegerPolynomial<Int> derivative(const IntegerPolynomial<Int>&);                               \
-  template Bernstein<Int> bernstein_on_piece(const IntegerPolynomial<Int>&, const Dyadic<Int>&);           \
-  template void split(const Bernstein<Int>&, Bernstein<Int>&, Bernstein<Int>&);                            \
-  template int uniform_sign(const Bernstein<Int>&);                                                        \
-  template int sign_variations(const Bernstein<Int>&);                                                     \
-  template IntegerPolynomial<Int> primitive_positive(const IntegerPolynomial<Int>&);                       \
-  template IntegerPolynomial<Int> gcd(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&);       \
+#define SSCC_INSTANTIATE_INTEGER_POLYNOMIAL(Int)                                                                \
+  template IntegerPolynomial<Int> operator+(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&);      \
+  template IntegerPolynomial<Int> operator-(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&);      \
+  template IntegerPolynomial<Int> operator-(const IntegerPolynomial<Int>&);                                     \
+  template IntegerPolynomial<Int> operator*(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&);      \
+  template Int scaled_value(const IntegerPolynomial<Int>&, const Dyadic<Int>&);                                 \
+  template IntegerPolynomial<Int> derivative(const IntegerPolynomial<Int>&);                                    \
+  template Bernstein<Int> bernstein_on_piece(const IntegerPolynomial<Int>&, const Dyadic<Int>&);                \
+  template Bernstein<Int> bernstein_on_interval(const IntegerPolynomial<Int>&, const Dyadic<Int>&, const Int&); \
+  template void split(const Bernstein<Int>&, Bernstein<Int>&, Bernstein<Int>&);                                 \
+  template int uniform_sign(const Bernstein<Int>&);                                                             \
+  template int sign_variations(const Bernstein<Int>&);                                                          \
+  template IntegerPolynomial<Int> primitive_positive(const IntegerPolynomial<Int>&);                            \
+  template IntegerPolynomial<Int> gcd(const IntegerPolynomial<Int>&, const IntegerPolynomial<Int>&);            \
   template IntegerPolynomial<Int> squarefree_part(const IntegerPolynomial<Int>&);
 
 SSCC_INSTANTIATE_INTEGER_POLYNOMIAL(FixedInt)

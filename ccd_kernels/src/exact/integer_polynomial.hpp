@@ -94,6 +94,9 @@ template <class Int>
 using Bernstein = std::array<Int, kMaxDegree + 1>;
 template <class Int>
 Bernstein<Int> bernstein_on_piece(const IntegerPolynomial<Int>& p, const Dyadic<Int>& piece_start);
+/// The same on [a / 2^k, (a + units) / 2^k].
+template <class Int>
+Bernstein<Int> bernstein_on_interval(const IntegerPolynomial<Int>& p, const Dyadic<Int>& start, const Int& units);
 /// The coefficients on the two halves of the piece (de Casteljau at the midpoint).
 template <class Int>
 void split(const Bernstein<Int>& whole, Bernstein<Int>& left, Bernstein<Int>& right);
