@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <utility>
 
 namespace sscc::ccd::exact_stage {
@@ -59,47 +60,45 @@ struct IsolationStep {
   Bernstein<Int> b;
   Dyadic<Int> start;
   bool emit_exact_start = false;  ///< emit an exact root at `start` before this piece
+  /// Splits in a row, just above this piece, that kept the same side (+: left, -: right)
+  /// while the other half had no sign change: the roots crowd towards that end.
+  int one_sided_run = 0;
 };
 
 /// How far below the piece's own depth a gallop looks (bits): beyond the doubling of the
 /// depth that Newton would reach.
 constexpr unsigned long kMaxGallopBits = 64;
 
-/// Isolation deeper than this many levels means roots close together or close to a piece's
-/// end, relative to its width (coordinates of very different magnitudes): only then does
-/// isolation try to gallop, as the Bernstein coefficients it takes would slow the common case.
-constexpr unsigned long kIsolationGallopDepth = 16;
-/// Levels between two gallop attempts of one chain of pieces: an attempt costs a few
-/// bisections, and fails where roots cluster inside a piece rather than at an end.
-constexpr unsigned long kIsolationGallopEvery = 8;
+/// One-sided splits in a row before isolation gallops towards that end: roots that close to
+/// an end relative to the piece (coordinates of very different magnitudes) are common, but
+/// an attempt costs a few bisections, and splits that alternate sides (a cluster inside the
+/// piece) never make such a run.
+constexpr int kIsolationGallopRun = 8;
 
-/// Moves an isolation piece to its first or last 2^-j part, for the largest j in 2, 4, 8, ...
-/// such that the rest of the piece provably holds no root of q: q is non-zero where the
-/// part ends and its Bernstein coefficients on the rest have no sign change (Descartes).
-/// A root at the piece's outer end is found by whoever owns that end (as for bisection).
-/// Returns false, changing nothing, when no such part exists.
+/// Moves an isolation piece to its first (`left`) or last 2^-j part, for the largest j in
+/// 2, 4, 8, ... such that the rest of the piece provably holds no root of q: q is non-zero
+/// where the part ends and its Bernstein coefficients on the rest have no sign change
+/// (Descartes). A root at the piece's outer end is found by whoever owns that end (as for
+/// bisection). Returns false, changing nothing, when no such part exists.
 template <class Int>
-bool gallop_isolation(const IntegerPolynomial<Int>& q, IsolationStep<Int>& step) {
+bool gallop_isolation(const IntegerPolynomial<Int>& q, bool left, IsolationStep<Int>& step) {
   const Dyadic<Int>& s = step.start;
-  for (const bool left : {true, false}) {
-    unsigned long best = 0;
-    for (unsigned long j = 2; j <= s.k + kMaxGallopBits; j *= 2) {
-      // The part's inner end, and the rest of the piece in units of 2^-(k + j).
-      const Int scale = Int(1) << j;
-      const Dyadic<Int> inner{left ? Int((s.a << j) + Int(1)) : Int((Int(s.a + Int(1)) << j) - Int(1)), s.k + j};
-      if (sign_at(q, inner) == 0) break;
-      const Dyadic<Int> rest_start = left ? inner : Dyadic<Int>{Int(s.a << j), s.k + j};
-      if (sign_variations(bernstein_on_interval(q, rest_start, Int(scale - Int(1)))) != 0) break;
-      best = j;
-    }
-    if (best == 0) continue;
-    step.start = left ? Dyadic<Int>{Int(s.a << best), s.k + best}
-                      : Dyadic<Int>{Int((Int(s.a + Int(1)) << best) - Int(1)), s.k + best};
-    step.b = bernstein_on_piece(q, step.start);
-    step.emit_exact_start = false;  // emitted when the piece was first taken
-    return true;
+  unsigned long best = 0;
+  for (unsigned long j = 2; j <= s.k + kMaxGallopBits; j *= 2) {
+    // The part's inner end, and the rest of the piece in units of 2^-(k + j).
+    const Int scale = Int(1) << j;
+    const Dyadic<Int> inner{left ? Int((s.a << j) + Int(1)) : Int((Int(s.a + Int(1)) << j) - Int(1)), s.k + j};
+    if (sign_at(q, inner) == 0) break;
+    const Dyadic<Int> rest_start = left ? inner : Dyadic<Int>{Int(s.a << j), s.k + j};
+    if (sign_variations(bernstein_on_interval(q, rest_start, Int(scale - Int(1)))) != 0) break;
+    best = j;
   }
-  return false;
+  if (best == 0) return false;
+  step.start = left ? Dyadic<Int>{Int(s.a << best), s.k + best}
+                    : Dyadic<Int>{Int((Int(s.a + Int(1)) << best) - Int(1)), s.k + best};
+  step.b = bernstein_on_piece(q, step.start);
+  step.emit_exact_start = false;  // emitted when the piece was first taken
+  return true;
 }
 
 }  // namespace
@@ -148,15 +147,20 @@ std::vector<DyadicRoot<Int>> roots_in_unit_interval(const IntegerPolynomial<Int>
       roots.push_back(std::move(r));
       continue;
     }
-    if (step.start.k >= kIsolationGallopDepth && step.start.k % kIsolationGallopEvery == 0 &&
-        gallop_isolation(q, step)) {
-      stack.push_back(std::move(step));
-      continue;
+    if (std::abs(step.one_sided_run) >= kIsolationGallopRun) {
+      const bool moved = gallop_isolation(q, step.one_sided_run > 0, step);
+      step.one_sided_run = 0;  // the next attempt waits for another run
+      if (moved) {
+        stack.push_back(std::move(step));
+        continue;
+      }
     }
     IsolationStep<Int> left{{}, left_child(step.start), false};
     IsolationStep<Int> right{{}, right_child(step.start), false};
     split(step.b, left.b, right.b);
     right.emit_exact_start = sgn(left.b[kMaxDegree]) == 0;  // the midpoint is a root
+    if (sign_variations(right.b) == 0) left.one_sided_run = std::max(step.one_sided_run, 0) + 1;
+    if (sign_variations(left.b) == 0) right.one_sided_run = std::min(step.one_sided_run, 0) - 1;
     stack.push_back(std::move(right));
     stack.push_back(std::move(left));
   }
