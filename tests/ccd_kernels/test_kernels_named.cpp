@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "agreement.hpp"
 #include "sscc/ccd/kernels.hpp"
@@ -153,5 +154,79 @@ TEST_CASE("contact parameters on nearly parallel edges and needle triangles", "[
     INFO(sscc::validation::describe(q));
     CHECK(sscc::validation::run_kernel(q, options).hit);
     CHECK(disagreement_with_reference(q, options) == "");
+  }
+}
+
+TEST_CASE("queries spanning the double range, found slow by searches, agree with the reference", "[kernels]") {
+  // Points in the kernels' argument order (vertex-face: v f0 f1 f2 at t0, then at t1;
+  // edge-edge: ea0 ea1 eb0 eb1 at t0, then at t1). The first two are issue 15's; the others
+  // were found by `sscc kernels --search-slow` on versions of the fixed-size exact stage.
+  using sscc::validation::Kind;
+  const std::vector<Query> queries = {
+      {Kind::kEdgeEdge,
+       {Eigen::Vector3d(0, 1, 0),
+        {0, 0, 0},
+        {-1, 0, 0},
+        {0x1p-1074, -1, 0},
+        {-1, -0x1p-1074, 0},
+        {0x1p956, 0, 0},
+        {1, -1, 0},
+        {-1, 0, 0}}},
+      {Kind::kVertexFace,
+       {Eigen::Vector3d(1, 0, 0x1p1000),
+        {0, 0, 0},
+        {1, 0, 0},
+        {1, 0x1p-855, 0},
+        {0, -1, 0},
+        {1, 0, 0},
+        {1, 0, 1},
+        {1, -0x1p979, 0}}},
+      {Kind::kVertexFace,
+       {Eigen::Vector3d(0, -0x1p+1, -0x1.8p-545),
+        {0x1p+0, 0x1p+921, 0x0.000008p-1022},
+        {-0x1p+607, -0x1p+1, -0x1.4p-16},
+        {-0x0.0000080000001p-1022, -0x1p-1022, 0x1.0000000002p+921},
+        {0x0.00000000008p-1022, -0x0.00a000000002p-1022, 0x0.0000000009p-1022},
+        {-0x0p+0, 0x1p-1022, -0x1.000008p+17},
+        {-0x1p+921, 0x0.0000102p-1022, 0x0.00001p-1022},
+        {0x1p-643, -0x1p+0, 0x1p+0}}},
+      {Kind::kEdgeEdge,
+       {Eigen::Vector3d(-0x0.000002p-1022, -0x1p+241, -0x1p-992),
+        {0x1p+0, 0x0.00000000004p-1022, 0x1.40020000008p+3},
+        {0x1.00000002p+1020, 0x1p+1, 0x1p+1},
+        {0x1p+0, 0x1p-461, -0x1p+241},
+        {0x1p-2, 0x1p+0, 0x1.0000000004p+529},
+        {0x1p+0, -0x1.000004p+789, -0x1p-104},
+        {-0x1.000000008p+499, -0x1p+789, -0x1.004000000004p-906},
+        {-0x1.00008p+221, -0x1p-521, 0x1.000000000001p+1020}}},
+      {Kind::kVertexFace,
+       {Eigen::Vector3d(0x1p+1, -0x1p+1, -0x1p+0),
+        {-0x1p-352, -0x1p+1, 0x1p+0},
+        {-0x1.0000000000004p+857, -0x1p+1, 0x0.0008p-1022},
+        {0x1p+1, -0x1p+1, -0x1.0000080800008p-481},
+        {-0x1p+1, -0x1p+1, 0x1.000001004p+1016},
+        {-0x1.0000000000008p+1, -0x1p+1, -0x1p+0},
+        {0x0.0008p-1022, -0x1p+1, 0x1.0000000000008p+1},
+        {0x1.00002000008p-895, -0x1p+1, -0x1p+1}}},
+      {Kind::kEdgeEdge,
+       {Eigen::Vector3d(0x1.001p+484, -0x1p+771, 0x1p+0),
+        {0x1p-562, 0x0.000000002p-1022, -0x1.4p+651},
+        {-0x1p+0, 0x1.001p+484, -0x1p+1},
+        {-0x0.000000002p-1022, -0x1.000000000004p+33, -0x1.1p+0},
+        {-0x1.100000001p+0, 0x1p+0, 0x1.000000004004p+0},
+        {0x1.000000000004p-32, 0x0p+0, 0x1.000080010004p+0},
+        {0x1.0000000000004p+916, 0x1.2p+0, -0x1p-999},
+        {-0x0.000000002p-1022, 0x1p+0, 0x0.000000002p-1022}}},
+  };
+  // The decision and the time of impact against the reference (disagreement_with_reference
+  // would also measure distances in doubles, which overflow at these magnitudes).
+  for (const Query& q : queries) {
+    INFO(sscc::validation::describe(q));
+    const sscc::ccd::CcdResult kernel = sscc::validation::run_kernel(q);
+    sscc::exact::ContactTime truth = sscc::validation::run_reference(q);
+    REQUIRE(kernel.hit == truth.has_value());
+    if (!truth) continue;
+    CHECK(sscc::exact::compare(mpq_class(kernel.toi), *truth) <= 0);
+    CHECK(sscc::exact::compare(mpq_class(kernel.toi) + mpq_class(sscc::ccd::kDefaultToiTolerance), *truth) >= 0);
   }
 }

@@ -15,33 +15,45 @@
 
 namespace sscc::ccd::exact_stage {
 
+template <class Int>
 struct DyadicRoot {
-  IntegerPolynomial polynomial;  ///< square-free
-  Dyadic start;                  ///< the root itself when exact, else its piece's start
+  IntegerPolynomial<Int> polynomial;  ///< square-free
+  Dyadic<Int> start;                  ///< the root itself when exact, else its piece's start
   bool exact = false;
   int sign_at_start = 0;  ///< of `polynomial`, when not exact (never 0)
   /// `polynomial` on the piece, when not exact: narrowing splits it (additions and shifts)
   /// rather than evaluating at the midpoint (products of long integers).
-  Bernstein on_piece;
+  Bernstein<Int> on_piece;
+  /// Bits the next Newton step aims to add (0: as many as the piece has). Halved past each
+  /// failure, doubled after each success: where the polynomial curves strongly (|p''/p'|
+  /// huge, coefficients of very different magnitudes) Newton gains fewer bits than the
+  /// piece has, long before it gains as many.
+  unsigned long newton_gain = 0;
 };
 
 /// The distinct real roots of p in the closed interval [0, 1], in increasing order.
 /// Precondition: p is not the zero polynomial.
-std::vector<DyadicRoot> roots_in_unit_interval(const IntegerPolynomial& p);
+template <class Int>
+std::vector<DyadicRoot<Int>> roots_in_unit_interval(const IntegerPolynomial<Int>& p);
 
 /// A root exactly at a / 2^k.
-DyadicRoot exact_root(const Dyadic& x);
+template <class Int>
+DyadicRoot<Int> exact_root(const Dyadic<Int>& x);
 
 /// Halves the root's piece (or finds it exactly at the midpoint).
-void bisect(DyadicRoot& root);
+template <class Int>
+void bisect(DyadicRoot<Int>& root);
 
 /// Exact sign (-1, 0, +1) of g at the root; narrows the root's piece as needed.
-int sign_at_root(const IntegerPolynomial& g, DyadicRoot& root);
+template <class Int>
+int sign_at_root(const IntegerPolynomial<Int>& g, DyadicRoot<Int>& root);
 
 /// Sign of (a - b); narrows both pieces as needed.
-int compare(DyadicRoot& a, DyadicRoot& b);
+template <class Int>
+int compare(DyadicRoot<Int>& a, DyadicRoot<Int>& b);
 
 /// A double at most the root and within `width` of it (width >= 2^-52); narrows the piece.
-double lower_bound_within(DyadicRoot& root, double width);
+template <class Int>
+double lower_bound_within(DyadicRoot<Int>& root, double width);
 
 }  // namespace sscc::ccd::exact_stage
