@@ -54,6 +54,7 @@
 
 #include <vector>
 
+#include "query/cull_record.hpp"
 #include "query/sweep.hpp"
 #include "sscc/bvh/subspace_bvh.hpp"
 
@@ -109,7 +110,8 @@ class StepDisplacement {
   StepDisplacement(const DisplacementBounds& bounds, const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0,
                    const Eigen::VectorXd& q_hat1, double separation);
 
-  /// Whether no two considered triangles under node n come within the separation during the step.
+  /// Whether no two considered triangles under node n come within the separation during the
+  /// step (false also where the query gave the test up: cull_record.hpp).
   bool node_apart(int n);
   /// Whether no considered pair of a triangle under a and one under b does.
   bool nodes_apart(int a, int b);
@@ -119,6 +121,8 @@ class StepDisplacement {
   double reach(int n);
   /// Whether the affine test culls node n.
   bool affine_apart(int n) const;
+  /// nodes_apart's test.
+  bool pair_apart(int a, int b, double clearance);
   /// C_n q_hat at both ends, with the bound of their rounding, once per node.
   struct Centres {
     Eigen::Vector3d at0, at1;
@@ -132,6 +136,8 @@ class StepDisplacement {
   Eigen::VectorXd magnitude0_, magnitude1_;  // |q_hat0|, |q_hat1| componentwise
   double norm_;                              // max(||q_hat0||, ||q_hat1||)
   double margin_;                            // 2 E plus the separation
+  int triangle_count(int n) const;
+  CullRecord node_tests_, pair_tests_;
   LazyBoxes<double> reaches_;
   LazyBoxes<Centres> centres_;
 };

@@ -52,15 +52,9 @@ bool PatchCull::contour_stays_simple(const Eigen::Vector3d& d, const std::vector
 
 int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin; }
 
-int PatchCull::size_class(int triangles) {
-  int k = 0;
-  while (triangles >>= 1) ++k;
-  return k;
-}
-
 bool PatchCull::cannot_self_touch(int n, int largest) {
   if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > largest) return false;
-  const int size = size_class(triangle_count(n));
+  const int size = CullRecord::size_class(triangle_count(n));
   return self_verdicts_.get(n, [&](int m) -> char {
     if (!boundaries_.simple_cycle(m) || !self_tests_.worth_trying(size)) return 0;
     const NormalCone& own = cone(m).cone;
@@ -72,7 +66,7 @@ bool PatchCull::cannot_touch(int a, int b, int largest) {
   const int smaller = std::min(triangle_count(a), triangle_count(b));
   const int larger = std::max(triangle_count(a), triangle_count(b));
   if (smaller < kSmallestUnionPart || larger > kLargestUnionRatio * smaller) return false;
-  const int size = size_class(smaller + larger);
+  const int size = CullRecord::size_class(smaller + larger);
   if (!pair_tests_.worth_trying(size)) return false;
   // Each part proven on its own (a disc whose normals stay in a half-space, its contour
   // simple): the union often is one too, and otherwise rarely.

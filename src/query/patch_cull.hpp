@@ -90,6 +90,7 @@
 #include <vector>
 
 #include "query/contour.hpp"
+#include "query/cull_record.hpp"
 #include "query/normal_cone.hpp"
 #include "query/simple_contour.hpp"
 #include "query/sweep.hpp"
@@ -113,15 +114,6 @@ inline constexpr int kSmallestUnionPart = 32;
 /// whole failed (measured: without it the bunny at amplitude 0.2 spent more on union tests
 /// than the culls saved). Higher: more tests of lopsided pairs; lower: none after a failure.
 inline constexpr int kLargestUnionRatio = 4;
-
-/// Within one query, the contour tests of a size class (nodes of 2^k to 2^(k+1) - 1
-/// triangles, self and pair tests apart) are given up once kJudgedAfterTries of them have
-/// been tried and fewer than one in kGiveUpBelowOneIn passed: where patches of that size are
-/// too curved or too jagged (coarse meshes, large motions), each failed test costs more than
-/// descending. Only fewer culls follow, never a wrong one. Measured on the bench's table:
-/// without it the cones were up to 27% slower than the plain query on the elephant.
-inline constexpr int kJudgedAfterTries = 16;
-inline constexpr int kGiveUpBelowOneIn = 8;
 
 /// Where certificates may still cull below a node (self_ccd.cpp decides), nodes with more triangles are not tested
 /// (nor are pairs with such a part): a cone needs every vertex under the node, while the
@@ -171,22 +163,9 @@ class PatchCull {
   const std::vector<Eigen::Vector3d>& x0_;
   const std::vector<Eigen::Vector3d>& x1_;
   EnsureTriangle ensure_triangle_;
-  /// Tries and passes of the contour tests per size class (kJudgedAfterTries).
-  struct TestRecord {
-    std::array<int, 32> tries{}, passes{};
-    bool worth_trying(int size_class) const {
-      return tries[size_class] < kJudgedAfterTries || passes[size_class] * kGiveUpBelowOneIn >= tries[size_class];
-    }
-    bool record(int size_class, bool passed) {
-      ++tries[size_class];
-      passes[size_class] += passed;
-      return passed;
-    }
-  };
-  static int size_class(int triangles);
 
   LazyBoxes<NodeCone> cones_;
-  TestRecord self_tests_, pair_tests_;
+  CullRecord self_tests_, pair_tests_;     // the contour tests, self and pair apart (cull_record.hpp)
   LazyBoxes<char> self_verdicts_;          // cannot_self_touch's answers, once per node
   std::vector<DirectedEdge> union_chain_;  // scratch of cannot_touch
 };
