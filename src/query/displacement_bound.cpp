@@ -20,25 +20,60 @@ using TrianglePoints = std::array<Vector3d, 3>;
 
 constexpr double kRoundoff = 0x1p-53;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// An absolute allowance for the rounding of results in the subnormal range, where each
+/// operation may err by up to 2^-1074 whatever the relative bounds say: far above the few dozen
+/// such roundings of any bound here, and far below anything a cull compares it with.
+constexpr double kUnderflowAllowance = 0x1p-1000;
 
 /// gamma_k = k u / (1 - k u): the relative error bound of k roundings.
 double gamma(int k) { return k * kRoundoff / (1.0 - k * kRoundoff); }
+
+/// Coordinates from which the closest-point search (which squares differences) could
+/// overflow: beyond it the triangles' boxes bound their distance instead.
+constexpr double kLargestSquarable = 1e150;
+
+/// The Euclidean distance between two boxes (a lower bound of the distance of what they
+/// hold), scaled so that it neither overflows nor underflows (an underflow would only lower
+/// it); 0 when a gap overflows.
+double box_distance(const Aabb& a, const Aabb& b) {
+  Vector3d gaps;
+  for (int k = 0; k < 3; ++k) gaps[k] = std::max({0.0, b.lo[k] - a.hi[k], a.lo[k] - b.hi[k]});
+  const double distance = gaps.stableNorm();
+  return std::isfinite(distance) ? distance : 0.0;
+}
+
+Aabb box_of(const TrianglePoints& t) {
+  Aabb box = Aabb::empty();
+  for (const Vector3d& p : t) box.add(p);
+  return box;
+}
 
 /// A lower bound of the distance between triangles a and b, 0 when they may touch. Any
 /// direction n bounds it: the triangles' projections on n are at least the gap apart, so the
 /// distance is at least gap / ||n||. The direction joining the closest points found makes that
 /// bound the distance itself (up to rounding); a poor direction only gives a smaller bound.
 /// Rounding: each dot product n . v errs by at most gamma_3 |n| . |v| (here bounded with a
-/// factor above 5), the gap's subtraction by u |gap|, and the norm by a few u.
+/// factor above 5) plus kUnderflowAllowance, the gap's subtraction by u |gap|, and the norm
+/// (scaled against underflow and overflow) by a few u. n is scaled to about unit length first,
+/// so that its products neither underflow nor overflow where the coordinates do not; any n is
+/// a direction, so the scaling's rounding does not matter.
 double distance_lower_bound(const TrianglePoints& a, const TrianglePoints& b) {
+  double largest = 0.0;
+  for (const TrianglePoints* t : {&a, &b}) {
+    for (const Vector3d& v : *t) largest = std::max(largest, v.cwiseAbs().maxCoeff());
+  }
+  if (!(largest < kLargestSquarable)) return box_distance(box_of(a), box_of(b));
   const TriangleClosestPoints closest = closest_points_disjoint_triangles(a, b);
   Vector3d on_a = Vector3d::Zero(), on_b = Vector3d::Zero();
   for (int i = 0; i < 3; ++i) {
     on_a += closest.first_weights[i] * a[i];
     on_b += closest.second_weights[i] * b[i];
   }
-  const Vector3d n = on_b - on_a;
-  const double length = n.norm();
+  const Vector3d joining = on_b - on_a;
+  const double scale = joining.stableNorm();
+  if (!(scale > 0.0) || !std::isfinite(scale)) return 0.0;
+  const Vector3d n = joining / scale;
+  const double length = n.stableNorm();
   if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
   double lowest_b = kInfinity, highest_a = -kInfinity, magnitude = 0.0;
   for (const Vector3d& v : b) {
@@ -50,19 +85,9 @@ double distance_lower_bound(const TrianglePoints& a, const TrianglePoints& b) {
     magnitude = std::max(magnitude, n.cwiseAbs().dot(v.cwiseAbs()));
   }
   const double gap = lowest_b - highest_a;
-  const double lower = gap - 16.0 * kRoundoff * (magnitude + std::abs(gap));
+  const double lower = gap - 16.0 * kRoundoff * (magnitude + std::abs(gap)) - kUnderflowAllowance;
   if (!(lower > 0.0)) return 0.0;
   return lower / (length * (1.0 + 16.0 * kRoundoff)) * (1.0 - 4.0 * kRoundoff);
-}
-
-/// The Euclidean distance between two boxes (a lower bound of the distance of what they hold).
-double box_distance(const Aabb& a, const Aabb& b) {
-  double squared = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double gap = std::max({0.0, b.lo[k] - a.hi[k], a.lo[k] - b.hi[k]});
-    squared += gap * gap;
-  }
-  return std::sqrt(squared);
 }
 
 /// Per triangle (mesh index), a lower bound of its rest distance to every triangle it is
@@ -80,10 +105,7 @@ std::vector<double> triangle_clearances(const SubspaceBvh& bvh) {
     return TrianglePoints{mesh.vertices()[triangle[0]], mesh.vertices()[triangle[1]], mesh.vertices()[triangle[2]]};
   };
   std::vector<Aabb> triangle_boxes(mesh.triangle_count());
-  for (int t = 0; t < mesh.triangle_count(); ++t) {
-    triangle_boxes[t] = Aabb::empty();
-    for (const Vector3d& p : points(t)) triangle_boxes[t].add(p);
-  }
+  for (int t = 0; t < mesh.triangle_count(); ++t) triangle_boxes[t] = box_of(points(t));
   std::vector<double> clearance(mesh.triangle_count(), kInfinity);
 #pragma omp parallel for schedule(dynamic, 64)
   for (int t = 0; t < mesh.triangle_count(); ++t) {
@@ -93,12 +115,13 @@ std::vector<double> triangle_clearances(const SubspaceBvh& bvh) {
     while (!stack.empty()) {
       const int n = stack.back();
       stack.pop_back();
-      if (box_distance(triangle_boxes[t], node_boxes[n]) >= nearest) continue;
+      if (nearest < kInfinity && box_distance(triangle_boxes[t], node_boxes[n]) >= nearest) continue;
       const SubspaceBvh::Node& node = bvh.nodes()[n];
       if (node.is_leaf()) {
         for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
           const int u = bvh.triangle_order()[i];
-          if (!model.considers(t, u) || box_distance(triangle_boxes[t], triangle_boxes[u]) >= nearest) continue;
+          if (!model.considers(t, u)) continue;
+          if (nearest < kInfinity && box_distance(triangle_boxes[t], triangle_boxes[u]) >= nearest) continue;
           nearest = std::min(nearest, distance_lower_bound(own, points(u)));
         }
         continue;
@@ -132,7 +155,7 @@ void fit_affine(const SubspaceModel& model, const std::vector<int>& vertices, do
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
   for (int v : vertices) {
     scatter += (rest[v] - centre) * (rest[v] - centre).transpose();
-    farthest = std::max(farthest, rest[v].norm());
+    farthest = std::max(farthest, rest[v].stableNorm());
   }
   scatter += (1e-6 * scatter.trace() + std::numeric_limits<double>::min()) * Eigen::Matrix3d::Identity();
   Eigen::Matrix3d inverse = scatter.inverse();
@@ -150,11 +173,12 @@ void fit_affine(const SubspaceModel& model, const std::vector<int>& vertices, do
     const Eigen::Matrix3d map = moment * inverse;
     double residual = 0.0, largest = 0.0;
     for (int v : vertices) {
-      residual = std::max(residual, (displacement(v, j) - mean - map * (rest[v] - centre)).norm());
-      largest = std::max(largest, displacement(v, j).norm());
+      const Vector3d left = displacement(v, j) - mean - map * (rest[v] - centre);
+      residual = std::max(residual, left.stableNorm());
+      largest = std::max(largest, displacement(v, j).stableNorm());
     }
-    const double magnitude = largest + mean.norm() + map.norm() * (farthest + centre.norm());
-    residuals[j] = residual * kSumSlack + 16.0 * kRoundoff * magnitude;
+    const double magnitude = largest + mean.stableNorm() + map.norm() * (farthest + centre.stableNorm());
+    residuals[j] = residual * kSumSlack + 16.0 * kRoundoff * magnitude + kUnderflowAllowance;
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) maps[(3 * a + b) * r + j] = map(a, b);
     }
@@ -182,6 +206,7 @@ DisplacementBounds::DisplacementBounds(const SubspaceBvh& bvh) : modes_(bvh.mode
   std::vector<int> seen(mesh.vertex_count(), -1);
   affine_index_.assign(node_count, -1);
   std::vector<int> vertices;
+  Eigen::VectorXd differences;
   for (int n = 0; n < node_count; ++n) {
     const SubspaceBvh::Node& node = bvh.nodes()[n];
     const auto mean = bvh.subspace_bound(n).mean_modes;
@@ -194,17 +219,14 @@ DisplacementBounds::DisplacementBounds(const SubspaceBvh& bvh) : modes_(bvh.mode
         if (seen[v] == n) continue;
         seen[v] = n;
         vertices.push_back(v);
-        double total = 0.0;
+        // Norms scaled against underflow (squares of differences below 1e-154 vanish) and
+        // overflow; the differences' own rounding is relative, or absolute when subnormal.
+        differences.resize(3 * modes_);
         for (int j = 0; j < modes_; ++j) {
-          double squared = 0.0;
-          for (int k = 0; k < 3; ++k) {
-            const double difference = model.scaled_basis()(3 * v + k, j) - mean(k, j);
-            squared += difference * difference;
-          }
-          spread[j] = std::max(spread[j], std::sqrt(squared));
-          total += squared;
+          for (int k = 0; k < 3; ++k) differences[3 * j + k] = model.scaled_basis()(3 * v + k, j) - mean(k, j);
+          spread[j] = std::max(spread[j], differences.segment<3>(3 * j).stableNorm() + kUnderflowAllowance);
         }
-        frobenius_spread_[n] = std::max(frobenius_spread_[n], std::sqrt(total));
+        frobenius_spread_[n] = std::max(frobenius_spread_[n], differences.stableNorm() + modes_ * kUnderflowAllowance);
       }
     }
     if (node.triangle_end - node.triangle_begin >= kSmallestAffineNode) {
@@ -240,7 +262,8 @@ StepDisplacement::StepDisplacement(const DisplacementBounds& bounds, const Subsp
   const int r = static_cast<int>(q_hat0.size());
   const double reach_of_basis = bounds.largest_basis_entry().dot(magnitude0_.cwiseMax(magnitude1_));
   const double position_rounding =
-      std::sqrt(3.0) * gamma(r + 1) * (bounds.largest_rest_coordinate() + reach_of_basis) * kSumSlack;
+      std::sqrt(3.0) * gamma(r + 1) * (bounds.largest_rest_coordinate() + reach_of_basis) * kSumSlack +
+      kUnderflowAllowance;
   margin_ = 2.0 * position_rounding + separation;
 }
 
@@ -258,7 +281,8 @@ const StepDisplacement::Centres& StepDisplacement::centres(int n) {
     const int r = static_cast<int>(magnitude0_.size());
     const Eigen::Vector3d magnitude = mean.cwiseAbs() * magnitude0_.cwiseMax(magnitude1_);
     // Each component is an r-term sum: it rounds by at most gamma_r of its terms' magnitudes.
-    return Centres{mean * q_hat0_, mean * q_hat1_, gamma(r + 1) * magnitude.stableNorm() * kSumSlack};
+    return Centres{mean * q_hat0_, mean * q_hat1_,
+                   gamma(r + 1) * magnitude.stableNorm() * kSumSlack + kUnderflowAllowance};
   });
 }
 
@@ -284,9 +308,9 @@ bool StepDisplacement::affine_apart(int n) const {
   double stretch = 0.0, wander = 0.0;
   for (const auto& [q, magnitude] : {std::pair{&q_hat0_, &magnitude0_}, std::pair{&q_hat1_, &magnitude1_}}) {
     const Eigen::Matrix<double, 9, 1> entries = map * *q, terms = map.cwiseAbs() * *magnitude;
-    stretch = std::max(stretch, entries.stableNorm() + gamma(r + 1) * terms.stableNorm());
+    stretch = std::max(stretch, entries.stableNorm() + gamma(r + 1) * terms.stableNorm() + kUnderflowAllowance);
 #ifndef SSCC_MUTANT_AFFINE_NO_RESIDUAL
-    wander = std::max(wander, magnitude->dot(residual));
+    wander = std::max(wander, magnitude->dot(residual) + kUnderflowAllowance);
 #endif
   }
   stretch *= kSumSlack;

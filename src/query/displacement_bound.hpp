@@ -47,7 +47,12 @@
 // The rest clearances are lower bounds by construction: a separating direction's gap with its
 // rounding subtracted (displacement_bound.cpp); spreads are rounded up, sums of non-negative
 // terms carry a relative slack far above their rounding (kSumSlack), and G_ab is computed from
-// the node centres' displacements with their rounding bound added.
+// the node centres' displacements with their rounding bound added. Every bound also carries an
+// absolute allowance for results in the subnormal range (kUnderflowAllowance), every norm is
+// scaled against underflow and overflow (a square of a difference below 1e-154 would vanish),
+// and an overflow or NaN anywhere fails the test (comparisons are written so), and the rest
+// gaps' search never skips a subtree before it has found a bound. The relative slack kSumSlack
+// covers r-term sums for r below about 10^5.
 #pragma once
 
 #include <Eigen/Core>

@@ -148,3 +148,22 @@ TEST_CASE("minimum separation against the minimum-distance reference: degenerate
   CHECK(tally.misses > 1500);
   CHECK(tally.sharp >= 0.9 * tally.probed);
 }
+
+TEST_CASE("minimum separation: exactly parallel edges far from the origin are decided, not reported at once",
+          "[kernels][separation]") {
+  // Two parallel edges about 15,000 apart, half a million from the origin, one end moving by
+  // an ulp: the directions of closest approach are too poor for the search over t, which
+  // used to run out and report contact for any d; the box search decides instead.
+  using V = Eigen::Vector3d;
+  const V a0(494920.61915488512, 545454.54545454541, 14.231483827328516);
+  const V a0_moved(494920.61915488512, 545454.54545454541, 14.231483827328518);
+  const V a1(479756.08173698478, 636363.63636363635, 28.173255684142969);
+  const V b0(494920.61915488512, 636363.63636363635, 14.231483827328516);
+  const V b1(479756.08173698478, 727272.72727272729, 28.173255684142969);
+  for (double d : {100.0, 1000.0, 10000.0, 14000.0}) {
+    sscc::ccd::CcdOptions options;
+    options.minimum_separation = d;
+    INFO("d = " << d);
+    CHECK_FALSE(sscc::ccd::edge_edge_ccd(a0, a1, b0, b1, a0_moved, a1, b0, b1, options).hit);
+  }
+}

@@ -217,3 +217,26 @@ TEST_CASE("displacement bounds: not applied with certificates, nor when switched
   on.use_certificates = false;
   CHECK(ccd.query(Eigen::VectorXd::Zero(model.mode_count()), q1, on).stats.displacement_culled > 0);
 }
+
+TEST_CASE("displacement bounds: gaps too large to square and spreads too small to square are still bounded",
+          "[displacement][query]") {
+  // Two triangles `gap` apart along z, one mode of size `size` moving the second onto the
+  // first over the step: rest gaps above 1e154 overflowed a squared box distance (and the
+  // search then skipped every partner), spreads below 1e-154 underflowed their squares.
+  const auto reports_agree = [](double gap, double size) {
+    const std::vector<Vector3d> x{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.2, 0.2, gap}, {1.2, 0.2, gap}, {0.2, 1.2, gap}};
+    Eigen::MatrixXd u = Eigen::MatrixXd::Zero(18, 1);
+    for (int v = 3; v < 6; ++v) u(3 * v + 2, 0) = -size;
+    const sscc::SubspaceModel model(sscc::TriangleMesh(x, {{0, 1, 2}, {3, 4, 5}}), u, Eigen::VectorXd::Ones(1));
+    const sscc::SelfCcd ccd{sscc::SubspaceBvh(model)};
+    const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(1), q1 = Eigen::VectorXd::Constant(1, 2 * gap / size);
+    sscc::SelfCcdOptions bounded;
+    bounded.use_certificates = false;
+    const sscc::SelfCcdReport exhaustive = ccd.query_exhaustive(q0, q1);
+    INFO("gap " << gap << ", mode size " << size);
+    CHECK(exhaustive.collided());
+    CHECK(same_reports(ccd.query(q0, q1, bounded), exhaustive));
+  };
+  for (double size : {1e-150, 1e-160, 1e-162, 1e-170}) reports_agree(0.5, size);
+  for (double gap : {1e150, 1e155, 1e160}) reports_agree(gap, 1.0);
+}

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "separation/bounded.hpp"
+#include "separation/box_search.hpp"
 
 namespace sscc::ccd {
 
@@ -220,9 +221,13 @@ CcdResult separation_search(const FourPointMotion& motion, double minimum_separa
     stack.pop_back();
     const Sample& lo = interval.lo;
     const Sample& hi = interval.hi;
-    // Out of budget, or too narrow to halve: contact at the earliest time not excluded.
+    // Out of budget, or too narrow to halve, with no sample within reach: the directions were
+    // too poor for the bound here (exactly parallel edges far from the origin), and the box
+    // search, which needs none, decides from the start (box_search.hpp).
     const double mid = 0.5 * (lo.t + hi.t);
-    if (examined >= kSeparationMaxBoxes || !(lo.t < mid && mid < hi.t)) return contact(lo, lo.t);
+    if (examined >= kSeparationMaxBoxes || !(lo.t < mid && mid < hi.t)) {
+      return box_separation_search(motion, minimum_separation, toi_tolerance);
+    }
     if (certainly_farther(lo, hi, m.vertices, minimum_separation)) continue;
     if (lo.distance <= reach) return contact(lo, lo.t);
     if (hi.t - lo.t <= toi_tolerance && hi.distance <= reach) return contact(hi, lo.t);

@@ -2,9 +2,11 @@
 // some t in [0, 1]?
 //
 // Guarantee: conservative. Never a false negative; "contact" may be reported when the
-// distance only comes within d (1 + kSeparationRelativeTolerance), or when the budget
-// kSeparationMaxBoxes runs out or an interval of t can no longer be halved in doubles
-// (rounding keeps the bound from deciding). Rounding limits the band: the bound's own error
+// distance only comes within d (1 + kSeparationRelativeTolerance). Where the budget
+// kSeparationMaxBoxes runs out or an interval of t can no longer be halved in doubles before a
+// sample comes within that band (the directions too poor for the bound: exactly parallel edges
+// far from the origin), the box search of box_search.hpp decides instead, from the start;
+// "contact" when its own budget runs out. Rounding limits the band: the bound's own error
 // is a few units in the last place of the primitives' extent (their sizes and motion), and
 // the directions it uses carry a little more; for d below about 1e-8 of the extent, seen on
 // near-degenerate queries, a contact may be reported for a distance somewhat beyond the band
