@@ -1,7 +1,6 @@
 // Giving up a cull that does not pay within one query: its tests are tallied per size class of
 // the nodes tried, and a class whose tests keep failing is not tried again. Only fewer culls
-// follow, never a wrong one. Private to the library (the normal cones and the displacement
-// bounds use it).
+// follow, never a wrong one. Private to the library (the normal cones use it).
 #pragma once
 
 #include <array>
@@ -10,11 +9,10 @@ namespace sscc::detail {
 
 /// A size class (nodes of 2^k to 2^(k+1) - 1 triangles, pairs by their total) is given up
 /// once kJudgedAfterTries of its tests have been tried and fewer than one in kGiveUpBelowOneIn
-/// passed: where patches of that size are too curved or too jagged for the cones, or move too
-/// much for the displacement bounds (coarse meshes, large motions), each failed test costs
-/// more than descending. Measured on the bench's table: without it the cones were up to 27%
-/// slower than the plain query on the elephant, the displacement bounds up to 6% at amplitude
-/// 0.2. Lower counts: given up sooner, also where a few culls would pay.
+/// passed: where patches of that size are too curved or too jagged for the cones (coarse
+/// meshes, large motions), each failed test costs more than descending. Measured on
+/// the bench's table: without it the cones were up to 27% slower than the plain query on the
+/// elephant. Lower counts: given up sooner, also where a few culls would pay.
 inline constexpr int kJudgedAfterTries = 16;
 inline constexpr int kGiveUpBelowOneIn = 8;
 

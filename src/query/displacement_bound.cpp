@@ -286,15 +286,9 @@ const StepDisplacement::Centres& StepDisplacement::centres(int n) {
   });
 }
 
-int StepDisplacement::triangle_count(int n) const {
-  return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin;
-}
-
 bool StepDisplacement::node_apart(int n) {
   const double clearance = bounds_.clearance(n);
-  const int size = CullRecord::size_class(triangle_count(n));
-  if (!(clearance > 0.0) || !node_tests_.worth_trying(size)) return false;
-  return node_tests_.record(size, (2.0 * reach(n) + margin_) * kSumSlack < clearance || affine_apart(n));
+  return clearance > 0.0 && ((2.0 * reach(n) + margin_) * kSumSlack < clearance || affine_apart(n));
 }
 
 bool StepDisplacement::affine_apart(int n) const {
@@ -320,12 +314,7 @@ bool StepDisplacement::affine_apart(int n) const {
 
 bool StepDisplacement::nodes_apart(int a, int b) {
   const double clearance = std::max(bounds_.clearance(a), bounds_.clearance(b));
-  const int size = CullRecord::size_class(triangle_count(a) + triangle_count(b));
-  if (!(clearance > 0.0) || !pair_tests_.worth_trying(size)) return false;
-  return pair_tests_.record(size, pair_apart(a, b, clearance));
-}
-
-bool StepDisplacement::pair_apart(int a, int b, double clearance) {
+  if (!(clearance > 0.0)) return false;
   const double reaches = reach(a) + reach(b) + margin_;
   if (!(reaches * kSumSlack < clearance)) return false;  // before the centres, which cost O(r)
   const Centres& ca = centres(a);
