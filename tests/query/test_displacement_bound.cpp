@@ -24,19 +24,10 @@ namespace {
 
 using Eigen::Vector3d;
 
-/// A tube of radius 0.1 around a helix of radius 1 rising `pitch` per turn, 2.5 turns: the
-/// coils' surfaces are pitch - 0.2 apart (close at pitch 0.25).
+/// The helix tube of parametric_meshes.hpp as a mesh: its coils' surfaces are pitch - 0.2
+/// apart (close at pitch 0.25).
 sscc::TriangleMesh helix_tube(double pitch) {
-  const sscc::test::Surface surface = [pitch](double u, double v) {
-    const double phi = 5 * M_PI * u, theta = 2 * M_PI * v;
-    const double h = pitch / (2 * M_PI);
-    const Vector3d centre(std::cos(phi), std::sin(phi), h * phi);
-    const Vector3d tangent = Vector3d(-std::sin(phi), std::cos(phi), h).normalized();
-    const Vector3d outward(std::cos(phi), std::sin(phi), 0.0);
-    const Vector3d binormal = tangent.cross(outward);
-    return Vector3d(centre + 0.1 * (std::cos(theta) * outward + std::sin(theta) * binormal));
-  };
-  return sscc::TriangleMesh(sscc::test::grid_positions(60, 8, false, true, surface),
+  return sscc::TriangleMesh(sscc::test::grid_positions(60, 8, false, true, sscc::test::helix_tube(pitch)),
                             sscc::test::grid_triangles(60, 8, false, true));
 }
 

@@ -45,20 +45,6 @@ Surface pinched_torus(double pinch) {
   };
 }
 
-/// A tube of radius 0.1 around a helix of radius 1 and `pitch` per turn, 2.5 turns: coils
-/// touch at pitch 0.2.
-Surface helix_tube(double pitch) {
-  return [pitch](double u, double v) {
-    const double phi = 5 * M_PI * u, theta = 2 * M_PI * v;
-    const double h = pitch / (2 * M_PI);
-    const Vector3d centre(std::cos(phi), std::sin(phi), h * phi);
-    const Vector3d tangent = Vector3d(-std::sin(phi), std::cos(phi), h).normalized();
-    const Vector3d outward(std::cos(phi), std::sin(phi), 0.0);
-    const Vector3d binormal = tangent.cross(outward);
-    return Vector3d(centre + 0.1 * (std::cos(theta) * outward + std::sin(theta) * binormal));
-  };
-}
-
 /// A ramp winding 1.5 turns about z (radii 0.5 to 1), rising `pitch` per turn: its normals
 /// stay near the z axis while its projection covers part of the annulus twice.
 Surface spiral_ramp(double pitch) {
@@ -76,7 +62,7 @@ std::vector<Keyframes> cases() {
   all.push_back({"pinched torus", 40, 10, true, true, {}});
   for (double pinch : {0.0, 0.6, 0.95, 1.0, 1.05}) all.back().shapes.push_back(pinched_torus(pinch));
   all.push_back({"helix tube", 60, 8, false, true, {}});
-  for (double pitch : {0.5, 0.3, 0.21, 0.2, 0.19}) all.back().shapes.push_back(helix_tube(pitch));
+  for (double pitch : {0.5, 0.3, 0.21, 0.2, 0.19}) all.back().shapes.push_back(sscc::test::helix_tube(pitch));
   all.push_back({"spiral ramp", 36, 3, false, false, {}});
   for (double pitch : {0.3, 0.1, 0.0}) all.back().shapes.push_back(spiral_ramp(pitch));
   return all;

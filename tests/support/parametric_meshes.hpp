@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <functional>
@@ -17,6 +18,20 @@ namespace sscc::test {
 
 /// A surface point for grid parameters u, v in [0, 1].
 using Surface = std::function<Eigen::Vector3d(double u, double v)>;
+
+/// A tube of radius 0.1 around a helix of radius 1 and `pitch` per turn, 2.5 turns: coils
+/// touch at pitch 0.2.
+inline Surface helix_tube(double pitch) {
+  return [pitch](double u, double v) {
+    const double phi = 5 * M_PI * u, theta = 2 * M_PI * v;
+    const double h = pitch / (2 * M_PI);
+    const Eigen::Vector3d centre(std::cos(phi), std::sin(phi), h * phi);
+    const Eigen::Vector3d tangent = Eigen::Vector3d(-std::sin(phi), std::cos(phi), h).normalized();
+    const Eigen::Vector3d outward(std::cos(phi), std::sin(phi), 0.0);
+    const Eigen::Vector3d binormal = tangent.cross(outward);
+    return Eigen::Vector3d(centre + 0.1 * (std::cos(theta) * outward + std::sin(theta) * binormal));
+  };
+}
 
 /// Vertex positions of an nu x nv grid on `surface`; a wrapped direction has no duplicate
 /// last row (u = 1 is u = 0).
