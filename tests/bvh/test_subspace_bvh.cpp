@@ -39,3 +39,48 @@ TEST_CASE("BVH: the swept box contains the node along the whole step", "[bvh]") 
     }
   }
 }
+
+namespace {
+
+/// Whether the triangles at positions [begin, end) of the hierarchy's order are edge-connected.
+bool edge_connected(const sscc::SubspaceBvh& bvh, int begin, int end) {
+  const sscc::TriangleMesh& mesh = bvh.model().mesh();
+  std::vector<char> in(mesh.triangle_count(), 0), seen(mesh.triangle_count(), 0);
+  for (int i = begin; i < end; ++i) in[bvh.triangle_order()[i]] = 1;
+  std::vector<int> stack{bvh.triangle_order()[begin]};
+  seen[stack.back()] = 1;
+  int reached = 0;
+  while (!stack.empty()) {
+    const int t = stack.back();
+    stack.pop_back();
+    ++reached;
+    for (int e : mesh.triangle_edges(t)) {
+      for (const int* u = mesh.triangles_of_edge_begin(e); u != mesh.triangles_of_edge_end(e); ++u) {
+        if (in[*u] && !seen[*u]) seen[*u] = 1, stack.push_back(*u);
+      }
+    }
+  }
+  return reached == end - begin;
+}
+
+}  // namespace
+
+TEST_CASE("BVH: the children of an edge-connected node are edge-connected patches", "[bvh]") {
+  // The normal-cone cull proves only connected patches free of self-contact; k-means alone
+  // leaves stray parts (measured on these meshes: 91 to 92% of such children connected).
+  for (const auto& mesh : {sscc::test::uv_sphere(24, 48), sscc::test::box_surface({1.0, 0.6, 0.3}, {16, 10, 6})}) {
+    const sscc::SubspaceModel model(mesh, sscc::polynomial_basis(mesh, 27), Eigen::VectorXd::Ones(27));
+    const sscc::SubspaceBvh bvh(model);
+    int children = 0, connected = 0;
+    for (const auto& node : bvh.nodes()) {
+      if (node.is_leaf() || !edge_connected(bvh, node.triangle_begin, node.triangle_end)) continue;
+      for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
+        ++children;
+        connected += edge_connected(bvh, bvh.nodes()[c].triangle_begin, bvh.nodes()[c].triangle_end);
+      }
+    }
+    INFO(connected << " of " << children << " children connected");
+    CHECK(children > 100);
+    CHECK(connected >= 0.99 * children);
+  }
+}

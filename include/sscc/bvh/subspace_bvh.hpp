@@ -3,7 +3,11 @@
 //
 // Built by recursive k-means (k = 4) on each triangle's rest centroid together with its
 // mode displacements (SSCC paper, section 3): triangles that are close and move alike share
-// a node. Children partition their parent's triangles; leaves hold at most kMaxLeafTriangles.
+// a node. Each cluster is then made edge-connected wherever its parent is (parts joined only
+// at a vertex, or not at all, move to the neighbouring cluster they share most edges with):
+// the normal-cone cull proves only connected patches free of self-contact
+// (src/query/patch_cull.hpp). Children partition their parent's triangles; leaves hold at
+// most kMaxLeafTriangles.
 //
 // Bound of node n for scaled coordinates q_hat: with c0 the centre of the rest box of the
 // node's vertices, C the mean of their 3 x r scaled mode blocks, h0 the rest half extents
@@ -82,6 +86,9 @@ class SubspaceBvh {
  private:
   void build(int node, std::vector<int>& triangles, std::mt19937_64& rng, int depth);
   void compute_bounds(int node);
+  /// Moves every edge-connected part of a cluster other than its largest to the neighbouring
+  /// cluster it shares most edges with (a few passes; parts with no neighbour stay).
+  void make_clusters_connected(const std::vector<int>& triangles, std::vector<int>& cluster);
 
   SubspaceModel model_;
   std::vector<Node> nodes_;
@@ -91,6 +98,7 @@ class SubspaceBvh {
   std::vector<Eigen::Vector3d> centre_, half_, rate_;
   std::vector<double> mean_modes_;
   std::vector<double> feature_;  // per triangle: centroid and mode block, 3 + 3r values
+  std::vector<int> local_;       // build scratch: a triangle's index in the node being split, or -1
   BvhBuildStats stats_;
 };
 
