@@ -62,11 +62,37 @@ bool is_simple_cycle(const std::vector<DirectedEdge>& chain) {
   return steps == by_from.size();
 }
 
+bool union_is_simple_cycle(const std::vector<DirectedEdge>& a, const std::vector<DirectedEdge>& b,
+                           std::vector<DirectedEdge>& sum) {
+  sum.clear();
+  const auto add_uncancelled = [&](const std::vector<DirectedEdge>& chain, const std::vector<DirectedEdge>& other) {
+    for (const DirectedEdge& e : chain) {
+      if (!std::binary_search(other.begin(), other.end(), DirectedEdge{e[1], e[0]})) sum.push_back(e);
+    }
+  };
+  add_uncancelled(a, b);
+  const std::size_t cancelled = a.size() - sum.size();
+  if (cancelled == 0) return false;
+  // Sorted by (from, to), a simple cycle lists each of its vertices once as `from`, in
+  // increasing order: a merge counts the shared ones.
+  std::size_t shared = 0;
+  for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+    if (a[i][0] < b[j][0]) {
+      ++i;
+    } else if (b[j][0] < a[i][0]) {
+      ++j;
+    } else {
+      ++shared, ++i, ++j;
+    }
+  }
+  if (shared != cancelled + 1) return false;
+  add_uncancelled(b, a);
+  return true;
+}
+
 NodeBoundaries::NodeBoundaries(const SubspaceBvh& bvh)
-    : chains_(bvh.nodes().size()), across_(bvh.nodes().size()), simple_cycle_(bvh.nodes().size(), 0) {
+    : chains_(bvh.nodes().size()), simple_cycle_(bvh.nodes().size(), 0) {
   const TriangleMesh& mesh = bvh.model().mesh();
-  std::vector<int> position(mesh.triangle_count());
-  for (int i = 0; i < mesh.triangle_count(); ++i) position[bvh.triangle_order()[i]] = i;
   // Children follow their parent in the node array: fill from the back.
   for (int n = static_cast<int>(bvh.nodes().size()) - 1; n >= 0; --n) {
     const SubspaceBvh::Node& node = bvh.nodes()[n];
@@ -83,18 +109,6 @@ NodeBoundaries::NodeBoundaries(const SubspaceBvh& bvh)
     }
     chains_[n] = boundary_chain(std::move(edges));
     simple_cycle_[n] = is_simple_cycle(chains_[n]);
-    for (const DirectedEdge& e : chains_[n]) {
-      // The mesh's edge {a, b} is among the first vertex's triangles' edges.
-      int twin = kNoTwin;
-      for (const int* t = mesh.triangles_of_vertex_begin(e[0]); t != mesh.triangles_of_vertex_end(e[0]); ++t) {
-        const Triangle& tri = mesh.triangles()[*t];
-        const bool has_b = tri[0] == e[1] || tri[1] == e[1] || tri[2] == e[1];
-        const int here = position[*t];
-        if (!has_b || (here >= node.triangle_begin && here < node.triangle_end)) continue;
-        twin = twin == kNoTwin ? here : kSeveralTwins;
-      }
-      across_[n].push_back(twin);
-    }
   }
 }
 

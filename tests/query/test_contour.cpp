@@ -8,6 +8,7 @@
 #include <random>
 
 #include "query/contour.hpp"
+#include "support/parametric_meshes.hpp"
 
 namespace {
 
@@ -88,6 +89,79 @@ TEST_CASE("contour: boundary chains cancel twins and keep same-orientation edges
   CHECK_FALSE(is_simple_cycle(boundary_chain(edges_of({{0, 1, 2}, {3, 4, 5}}))));
   // A non-manifold fan: three triangles on edge (0, 1).
   CHECK_FALSE(is_simple_cycle(boundary_chain(edges_of({{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}))));
+}
+
+TEST_CASE("contour: a union of two simple cycles is accepted only as the one simple cycle of the sum", "[contour]") {
+  using sscc::detail::boundary_chain;
+  using sscc::detail::is_simple_cycle;
+  // Patches grown on a 10 x 10 grid (a torus when wrapped): pairs that share one path, several
+  // paths (an annulus), only a vertex, or nothing.
+  std::mt19937_64 rng(5);
+  int accepted = 0, refused = 0, simple_sums = 0;
+  for (const bool wrap : {false, true}) {
+    const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(10, 10, wrap, wrap);
+    const int n = static_cast<int>(triangles.size());
+    const auto shared_vertices = [&](int s, int t) {
+      int count = 0;
+      for (int v : triangles[s]) count += std::count(triangles[t].begin(), triangles[t].end(), v);
+      return count;
+    };
+    // A random region of up to `size` triangles grown from `seed` through shared edges, and now
+    // and then through a shared vertex only (so some are not discs), avoiding `taken`.
+    const auto grow = [&](int seed, int size, const std::vector<char>& taken) {
+      std::vector<int> region{seed};
+      std::vector<char> in(n, 0);
+      in[seed] = 1;
+      for (int tries = 0; static_cast<int>(region.size()) < size && tries < 200 * size; ++tries) {
+        const int from = region[std::uniform_int_distribution<int>(0, static_cast<int>(region.size()) - 1)(rng)];
+        const int t = std::uniform_int_distribution<int>(0, n - 1)(rng);
+        const int needed = tries % 17 == 0 ? 1 : 2;
+        if (!in[t] && !taken[t] && shared_vertices(from, t) >= needed) in[t] = 1, region.push_back(t);
+      }
+      return region;
+    };
+    for (int trial = 0; trial < 3000; ++trial) {
+      std::vector<char> taken(n, 0);
+      const std::vector<int> a = grow(std::uniform_int_distribution<int>(0, n - 1)(rng), 1 + trial % 40, taken);
+      for (int t : a) taken[t] = 1;
+      // b starts beside a (an edge, or a vertex now and then) or anywhere.
+      std::vector<int> beside;
+      const int needed = trial % 5 == 0 ? 1 : 2;
+      for (int t = 0; t < n; ++t) {
+        for (int s : a) {
+          if (!taken[t] && shared_vertices(s, t) >= needed) {
+            beside.push_back(t);
+            break;
+          }
+        }
+      }
+      if (trial % 11 == 0 || beside.empty()) beside.assign(1, std::uniform_int_distribution<int>(0, n - 1)(rng));
+      const int seed_b = beside[std::uniform_int_distribution<int>(0, static_cast<int>(beside.size()) - 1)(rng)];
+      if (taken[seed_b]) continue;
+      const std::vector<int> b = grow(seed_b, 1 + (trial / 40) % 40, taken);
+      std::vector<sscc::Triangle> ta, tb, both;
+      for (int t : a) ta.push_back(triangles[t]), both.push_back(triangles[t]);
+      for (int t : b) tb.push_back(triangles[t]), both.push_back(triangles[t]);
+      const auto chain_a = boundary_chain(edges_of(ta));
+      const auto chain_b = boundary_chain(edges_of(tb));
+      if (!is_simple_cycle(chain_a) || !is_simple_cycle(chain_b)) continue;
+      const auto reference = boundary_chain(edges_of(both));
+      simple_sums += is_simple_cycle(reference);
+      std::vector<DirectedEdge> sum;
+      if (!sscc::detail::union_is_simple_cycle(chain_a, chain_b, sum)) {
+        ++refused;
+        continue;
+      }
+      ++accepted;
+      INFO("trial " << trial << (wrap ? " (torus)" : ""));
+      REQUIRE(is_simple_cycle(reference));
+      std::sort(sum.begin(), sum.end());
+      REQUIRE(sum == reference);
+    }
+  }
+  CHECK(accepted > 200);
+  CHECK(refused > 200);  // apart, meeting at vertices, or an annulus
+  CHECK(simple_sums >= accepted);
 }
 
 TEST_CASE("contour: a loop winding twice, a reversed loop or a non-star loop is refused", "[contour]") {
