@@ -21,11 +21,13 @@ NodeBounds parse_bounds(const std::string& bounds) {
 }
 
 SelfCcdOptions query_options(const std::string& mode, const std::string& bounds, bool use_certificates,
-                             bool use_displacement_bounds, double toi_tolerance, double minimum_separation) {
+                             bool use_normal_cones, bool use_displacement_bounds, double toi_tolerance,
+                             double minimum_separation) {
   SelfCcdOptions options;
   options.mode = parse_mode(mode);
   options.bounds = parse_bounds(bounds);
   options.use_certificates = use_certificates;
+  options.use_normal_cones = use_normal_cones;
   options.use_displacement_bounds = use_displacement_bounds;
   options.kernel = kernel_options(toi_tolerance, minimum_separation);
   return options;
@@ -106,38 +108,42 @@ void bind_queries(py::module_& m) {
       .def(
           "query",
           [](const SelfCcd& detector, py::object q0, py::object q1, const std::string& mode, const std::string& bounds,
-             bool use_certificates, bool use_displacement_bounds, double toi_tolerance, double minimum_separation) {
+             bool use_certificates, bool use_normal_cones, bool use_displacement_bounds, double toi_tolerance,
+             double minimum_separation) {
             const Eigen::VectorXd a = vector_from(q0, "q0");
             const Eigen::VectorXd b = vector_from(q1, "q1");
-            const SelfCcdOptions options = query_options(mode, bounds, use_certificates, use_displacement_bounds,
-                                                         toi_tolerance, minimum_separation);
+            const SelfCcdOptions options = query_options(mode, bounds, use_certificates, use_normal_cones,
+                                                         use_displacement_bounds, toi_tolerance, minimum_separation);
             py::gil_scoped_release release;
             return detector.query(a, b, options);
           },
           py::arg("q0"), py::arg("q1"), py::kw_only(), py::arg("mode") = "all", py::arg("bounds") = "hybrid",
-          py::arg("use_certificates") = true, py::arg("use_displacement_bounds") = true,
-          py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
+          py::arg("use_certificates") = true, py::arg("use_normal_cones") = true,
+          py::arg("use_displacement_bounds") = true, py::arg("toi_tolerance") = ccd::kDefaultToiTolerance,
+          py::arg("minimum_separation") = 0.0,
           (std::string("The step q0 -> q1 (reduced coordinates, (r,) each). ") + kModeDoc +
-           "bounds: node boxes 'hybrid' (default), 'refit' or 'subspace'. use_displacement_bounds: without "
-           "certificates, cull by the step's displacements mode by mode. Both False give the traditional "
-           "query. " +
+           "bounds: node boxes 'hybrid' (default), 'refit' or 'subspace'. use_normal_cones: cull patches "
+           "whose normals stay in a cone and whose contour stays simple. use_displacement_bounds: without "
+           "certificates, cull by the step's displacements mode by mode. All three False give the "
+           "traditional query. " +
            kKernelDoc + "Raises ValueError for q of the wrong size or not finite.")
               .c_str())
       .def(
           "query_positions",
-          [](const SelfCcd& detector, py::object x0, py::object x1, const std::string& mode, double toi_tolerance,
-             double minimum_separation) {
+          [](const SelfCcd& detector, py::object x0, py::object x1, const std::string& mode, bool use_normal_cones,
+             double toi_tolerance, double minimum_separation) {
             const std::vector<Eigen::Vector3d> a = points_from(x0, "x0");
             const std::vector<Eigen::Vector3d> b = points_from(x1, "x1");
             const SelfCcdOptions options =
-                query_options(mode, "hybrid", false, false, toi_tolerance, minimum_separation);
+                query_options(mode, "hybrid", false, use_normal_cones, false, toi_tolerance, minimum_separation);
             py::gil_scoped_release release;
             return detector.query_positions(a, b, options);
           },
-          py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("mode") = "all",
+          py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("mode") = "all", py::arg("use_normal_cones") = true,
           py::arg("toi_tolerance") = ccd::kDefaultToiTolerance, py::arg("minimum_separation") = 0.0,
-          (std::string("The traditional query on explicit vertex positions at both ends of the step ((n, 3) "
-                       "each; every vertex moves linearly): for poses the subspace does not hold. ") +
+          (std::string("The query on explicit vertex positions at both ends of the step ((n, 3) each; every "
+                       "vertex moves linearly): for poses the subspace does not hold. use_normal_cones: as for "
+                       "query (False: the traditional query). ") +
            kModeDoc + kKernelDoc)
               .c_str())
       .def(
@@ -159,7 +165,7 @@ void bind_queries(py::module_& m) {
             const Eigen::VectorXd a = vector_from(q0, "q0");
             const Eigen::VectorXd b = vector_from(q1, "q1");
             const SelfCcdOptions options =
-                query_options(mode, "hybrid", false, false, toi_tolerance, minimum_separation);
+                query_options(mode, "hybrid", false, false, false, toi_tolerance, minimum_separation);
             py::gil_scoped_release release;
             return detector.query_exhaustive(a, b, options);
           },

@@ -127,6 +127,7 @@ class SelfCcd:
         mode: _Mode = "all",
         bounds: _Bounds = "hybrid",
         use_certificates: bool = True,
+        use_normal_cones: bool = True,
         use_displacement_bounds: bool = True,
         toi_tolerance: float = ...,
         minimum_separation: float = 0.0,
@@ -137,6 +138,7 @@ class SelfCcd:
         x1: _Floats,
         *,
         mode: _Mode = "all",
+        use_normal_cones: bool = True,
         toi_tolerance: float = ...,
         minimum_separation: float = 0.0,
     ) -> SelfCcdReport: ...

@@ -19,9 +19,35 @@ def test_small_step_is_certified_by_the_root(sphere_bvh, sphere_certificates):
     assert report.stats["kernel_calls"] == 0
     assert not report.collided and report.pairs.shape == (0, 2)
     # The same step without certificates does the work and finds the same nothing.
-    traditional = detector.query(np.zeros(MODES), q1, use_certificates=False, use_displacement_bounds=False)
+    traditional = detector.query(np.zeros(MODES), q1, use_certificates=False, use_normal_cones=False,
+                                 use_displacement_bounds=False)
     assert not traditional.stats["root_certified"] and traditional.stats["kernel_calls"] > 0
     assert not traditional.collided
+
+
+def test_normal_cones_on_and_off(sphere_bvh):
+    # The cones (on by default) cull patches of the sphere; switched off they cull nothing.
+    # Both report what the exhaustive reference does, on q and on explicit positions.
+    detector = sscc.SelfCcd(sphere_bvh)
+    model = sphere_bvh.model
+    rng = np.random.default_rng(8)
+    culled = 0
+    for amplitude in (0.01, 0.4, 1.2):
+        q0 = random_q(rng, amplitude)
+        q1 = q0 + random_q(rng, amplitude)
+        reference = detector.query_exhaustive(q0, q1)
+        x0, x1 = model.deformed_positions(q0), model.deformed_positions(q1)
+        cones = detector.query(q0, q1, use_certificates=False, use_displacement_bounds=False)
+        plain = detector.query(q0, q1, use_certificates=False, use_normal_cones=False,
+                               use_displacement_bounds=False)
+        positions = detector.query_positions(x0, x1)
+        plain_positions = detector.query_positions(x0, x1, use_normal_cones=False)
+        for report in (cones, plain, positions, plain_positions):
+            np.testing.assert_array_equal(report.pairs, reference.pairs)
+            np.testing.assert_array_equal(report.toi, reference.toi)
+        assert plain.stats["cone_culled"] == 0 and plain_positions.stats["cone_culled"] == 0
+        culled += cones.stats["cone_culled"] + positions.stats["cone_culled"]
+    assert culled > 0
 
 
 def test_displacement_bounds_without_certificates(sphere_bvh):
@@ -35,7 +61,8 @@ def test_displacement_bounds_without_certificates(sphere_bvh):
         q1 = q0 + random_q(rng, amplitude)
         reference = detector.query_exhaustive(q0, q1)
         bounded = detector.query(q0, q1, use_certificates=False)
-        plain = detector.query(q0, q1, use_certificates=False, use_displacement_bounds=False)
+        plain = detector.query(q0, q1, use_certificates=False, use_normal_cones=False,
+                               use_displacement_bounds=False)
         for report in (bounded, plain):
             np.testing.assert_array_equal(report.pairs, reference.pairs)
             np.testing.assert_array_equal(report.toi, reference.toi)

@@ -52,8 +52,8 @@ bool PatchCull::contour_stays_simple(const Eigen::Vector3d& d, const std::vector
 
 int PatchCull::triangle_count(int n) const { return bvh_.nodes()[n].triangle_end - bvh_.nodes()[n].triangle_begin; }
 
-bool PatchCull::cannot_self_touch(int n, int largest) {
-  if (triangle_count(n) < kSmallestConeNode || triangle_count(n) > largest) return false;
+bool PatchCull::cannot_self_touch(int n) {
+  if (triangle_count(n) < kSmallestConeNode) return false;
   const int size = CullRecord::size_class(triangle_count(n));
   return self_verdicts_.get(n, [&](int m) -> char {
     if (!boundaries_.simple_cycle(m) || !self_tests_.worth_trying(size)) return 0;

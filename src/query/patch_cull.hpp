@@ -115,15 +115,6 @@ inline constexpr int kSmallestUnionPart = 32;
 /// than the culls saved). Higher: more tests of lopsided pairs; lower: none after a failure.
 inline constexpr int kLargestUnionRatio = 4;
 
-/// Where certificates may still cull below a node (self_ccd.cpp decides), nodes with more triangles are not tested
-/// (nor are pairs with such a part): a cone needs every vertex under the node, while the
-/// default hybrid bounds compute positions only below kRefitTriangleLimit triangles, where the
-/// traversal needs them anyway. Testing larger nodes computed whole subtrees that
-/// certificates would have culled (on the lion at amplitude 0.1, 7.8 ms per step against 5.4
-/// without cones). Without certificates the traversal reaches nearly every vertex anyway, and
-/// nodes of every size are tested (halving the lion's node tests at amplitude 0.01).
-inline constexpr int kLargestConeNodeWithCertificates = kRefitTriangleLimit;
-
 /// The cull for one query. Positions x0, x1 belong to the caller, who computes a triangle's
 /// vertices when asked through `ensure_triangle` (the triangle's position in the hierarchy's
 /// order); nothing here outlives the query. Cones are built bottom-up, once per node reached:
@@ -137,8 +128,8 @@ class PatchCull {
             const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle);
 
   /// Whether node n's triangles provably never touch one another during the step (tried for
-  /// nodes of kSmallestConeNode to `largest` triangles).
-  bool cannot_self_touch(int n, int largest);
+  /// nodes of at least kSmallestConeNode triangles).
+  bool cannot_self_touch(int n);
   /// Whether the union of the disjoint nodes a and b provably has no touching pair (tried when
   /// cannot_self_touch has already proven each, with at least kSmallestUnionPart triangles).
   bool cannot_touch(int a, int b);

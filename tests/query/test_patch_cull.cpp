@@ -176,7 +176,7 @@ TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour o
       REQUIRE(sscc::detail::certainly_positive(Vector3d(0, 0, -1), n));
     }
     sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
-    CHECK_FALSE(cull.cannot_self_touch(0, std::numeric_limits<int>::max()));
+    CHECK_FALSE(cull.cannot_self_touch(0));
   }
   // A short piece of the ramp (54 degrees) is a star-shaped disc in projection: culled.
   const int short_nu = 6;
@@ -187,7 +187,7 @@ TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour o
   const sscc::SubspaceBvh bvh(model);
   const sscc::detail::NodeBoundaries boundaries(bvh);
   sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
-  CHECK(cull.cannot_self_touch(0, std::numeric_limits<int>::max()));
+  CHECK(cull.cannot_self_touch(0));
 }
 
 TEST_CASE("normal cones: every node and node pair the cull accepts has no touching pair under brute force",
@@ -228,7 +228,7 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
       };
       INFO(c.name << ": keyframe " << k << " to " << k + 1);
       for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
-        if (!cull.cannot_self_touch(n, std::numeric_limits<int>::max())) continue;
+        if (!cull.cannot_self_touch(n)) continue;
         ++accepted_nodes;
         REQUIRE(
             no_contact(nodes[n].triangle_begin, nodes[n].triangle_end, nodes[n].triangle_begin, nodes[n].triangle_end));
