@@ -357,7 +357,7 @@ class Traversal {
       ++context_.stats().displacement_culled;
       return;
     }
-    if (!certificates_cull_below(n) && context_.node_cannot_self_touch(n)) {
+    if (context_.node_cannot_self_touch(n)) {
       ++context_.stats().cone_culled;
       return;
     }
@@ -405,26 +405,6 @@ class Traversal {
   }
 
  private:
-  /// Whether the certificates cull a child or grandchild of node n: its descent then skips
-  /// that subtree, whose normals a cone of n would compute. Measured on the default demo's
-  /// traversed steps, one thread, per scene step: certificates alone 1.96 ms; with cones on
-  /// nodes of at most 64 triangles where certificates might cull below, 2.48 ms; with this
-  /// rule (and cannot_touch's, on proven parts only) instead, on nodes of any size, 1.74 ms
-  /// (1.73 with children only, but 4% slower than certificates alone on steps within 2 to 4
-  /// root radii, 4% faster with grandchildren).
-  bool certificates_cull_below(int n) const {
-    if (!certificates_) return false;
-    const SubspaceBvh::Node& node = bvh_.nodes()[n];
-    for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
-      if (s_ < certificates_->node_radius(c)) return true;
-      const SubspaceBvh::Node& child = bvh_.nodes()[c];
-      for (int g = child.first_child; g < child.first_child + child.child_count; ++g) {
-        if (s_ < certificates_->node_radius(g)) return true;
-      }
-    }
-    return false;
-  }
-
   const SubspaceBvh& bvh_;
   Context& context_;
   const Certificates* certificates_;
