@@ -5,11 +5,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "brute_force.hpp"
 #include "query/patch_cull.hpp"
+#include "sscc/certificates/certificates.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "support/parametric_meshes.hpp"
 
@@ -96,7 +96,7 @@ std::vector<std::pair<int, int>> pairs_of(const sscc::SelfCcdReport& report) {
 
 TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive testing and brute force do",
           "[patch_cull][query]") {
-  long culled = 0;
+  long culled = 0, culled_with_certificates = 0;
   int colliding_steps = 0, steps = 0;
   for (const Keyframes& c : cases()) {
     std::vector<std::vector<Vector3d>> frames;
@@ -105,6 +105,7 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
         sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
     const sscc::SubspaceBvh bvh(model);
     const sscc::SelfCcd ccd(bvh);
+    const sscc::SelfCcd certified(bvh, sscc::Certificates::precompute(bvh));
     const int modes = model.mode_count();
     // Consecutive keyframes, and the jumps from the first to each (larger folds in one step).
     std::vector<std::pair<int, int>> transitions;
@@ -124,13 +125,19 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
       REQUIRE(with_cones.features == exhaustive.features);
       REQUIRE(traditional.pairs == exhaustive.pairs);
       REQUIRE(pairs_of(with_cones) == brute_force_pairs(model, q0, q1));
+      // The library's defaults: certificates and cones together.
+      const sscc::SelfCcdReport defaults = certified.query(q0, q1);
+      REQUIRE(defaults.pairs == exhaustive.pairs);
+      REQUIRE(defaults.features == exhaustive.features);
       CHECK(traditional.stats.cone_culled == 0);
       culled += with_cones.stats.cone_culled;
+      culled_with_certificates += defaults.stats.cone_culled;
       colliding_steps += with_cones.collided();
       ++steps;
     }
   }
   CHECK(culled > 20);                   // the cones did cull
+  CHECK(culled_with_certificates > 0);  // also beside the certificates
   CHECK(colliding_steps >= steps / 3);  // and the steps do collide
 }
 
