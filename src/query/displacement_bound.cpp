@@ -200,6 +200,13 @@ DisplacementBounds::DisplacementBounds(const SubspaceBvh& bvh) : modes_(bvh.mode
   const TriangleMesh& mesh = model.mesh();
   const int node_count = static_cast<int>(bvh.nodes().size());
   const std::vector<double> by_triangle = triangle_clearances(bvh);
+  std::vector<int> counted;
+  for (int n = 0; n < node_count; ++n) {
+    const SubspaceBvh::Node& node = bvh.nodes()[n];
+    if (node.triangle_end - node.triangle_begin >= kSmallestSampledNode) counted.push_back(n);
+  }
+  const std::size_t stride = counted.size() / kSampledNodes + 1;
+  for (std::size_t k = 0; k < counted.size(); k += stride) sample_.push_back(counted[k]);
   clearance_.assign(node_count, kInfinity);
   spread_.assign(static_cast<std::size_t>(node_count) * modes_, 0.0);
   frobenius_spread_.assign(node_count, 0.0);
@@ -289,6 +296,13 @@ const StepDisplacement::Centres& StepDisplacement::centres(int n) {
 bool StepDisplacement::node_apart(int n) {
   const double clearance = bounds_.clearance(n);
   return clearance > 0.0 && ((2.0 * reach(n) + margin_) * kSumSlack < clearance || affine_apart(n));
+}
+
+double StepDisplacement::apart_fraction() {
+  const std::vector<int>& sample = bounds_.sample();
+  if (sample.empty()) return 0.0;
+  const auto apart = std::count_if(sample.begin(), sample.end(), [&](int n) { return node_apart(n); });
+  return static_cast<double>(apart) / static_cast<double>(sample.size());
 }
 
 bool StepDisplacement::affine_apart(int n) const {

@@ -91,9 +91,13 @@ class DisplacementBounds {
   double largest_rest_coordinate() const { return largest_rest_coordinate_; }
   /// Per mode j, the largest absolute entry of the scaled basis's column j.
   const Eigen::VectorXd& largest_basis_entry() const { return largest_basis_entry_; }
+  /// At most kSampledNodes nodes of at least kSmallestSampledNode triangles, spread over the
+  /// hierarchy: what StepDisplacement::apart_fraction tests.
+  const std::vector<int>& sample() const { return sample_; }
 
  private:
   int modes_ = 0;
+  std::vector<int> sample_;
   std::vector<double> clearance_;
   std::vector<double> spread_;
   std::vector<double> frobenius_spread_;
@@ -108,6 +112,12 @@ class DisplacementBounds {
 /// memory of the fits. Lower: more memory and fits; higher: fewer nodes culled at large steps.
 inline constexpr int kSmallestAffineNode = 16;
 
+/// The sample by which a step judges how much of the hierarchy the displacement bounds cull
+/// (where they cull some, the normal cones are not used: self_ccd.cpp). 64 tests cost O(64 r),
+/// a few microseconds; nodes of fewer triangles than kSmallestSampledNode are not counted.
+inline constexpr int kSampledNodes = 64;
+inline constexpr int kSmallestSampledNode = 2 * kMaxLeafTriangles;
+
 /// The cull for one step q_hat0 -> q_hat1 (scaled coordinates); nothing here outlives it.
 class StepDisplacement {
  public:
@@ -121,6 +131,8 @@ class StepDisplacement {
   bool node_apart(int n);
   /// Whether no considered pair of a triangle under a and one under b does.
   bool nodes_apart(int a, int b);
+  /// The fraction of the nodes of DisplacementBounds::sample() for which node_apart holds.
+  double apart_fraction();
 
  private:
   /// D_n of the theorem, once per node.
