@@ -83,7 +83,8 @@ TEST_CASE("excluded pairs: certificates and queries equal exhaustive testing wit
   traditional.use_certificates = false;
   sscc::SelfCcdOptions one_thread;
   one_thread.threads = 1;
-  sscc::SelfCcdOptions cones;
+  sscc::SelfCcdOptions cones;  // the cones alone
+  sscc::set_traditional(cones);
   cones.use_normal_cones = true;
   int colliding = 0, certified = 0;
   for (double amplitude : {0.2 * m.certificates.node_radius(0), 0.05, 0.2, 0.5}) {

@@ -115,10 +115,13 @@ int check_queries(const sscc::SubspaceModel& model, const sscc::SelfCcd& detecto
       for (auto bounds : {sscc::NodeBounds::kHybrid, sscc::NodeBounds::kRefit, sscc::NodeBounds::kSubspace}) {
         for (int threads : {1, 3}) {
           INFO("bounds " << int(bounds) << " threads " << threads);
-          sscc::SelfCcdOptions options;
+          sscc::SelfCcdOptions options;  // the defaults, then without cones, then the cones alone
           options.bounds = bounds;
           options.threads = threads;
           require_same(detector.query(q0, q1, options), expected);
+          options.use_normal_cones = false;
+          require_same(detector.query(q0, q1, options), expected);
+          sscc::set_traditional(options);
           options.use_normal_cones = true;
           require_same(detector.query(q0, q1, options), expected);
         }

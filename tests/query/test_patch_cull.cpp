@@ -114,7 +114,8 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
     for (const auto& [from, to] : transitions) {
       const Eigen::VectorXd q0 = sscc::test::keyframe_q(modes, from), q1 = sscc::test::keyframe_q(modes, to);
       INFO(c.name << ": keyframe " << from << " to " << to);
-      sscc::SelfCcdOptions cones;
+      sscc::SelfCcdOptions cones;  // the cones alone
+      sscc::set_traditional(cones);
       cones.use_normal_cones = true;
       const sscc::SelfCcdReport with_cones = ccd.query(q0, q1, cones);
       sscc::SelfCcdOptions plain;
@@ -160,6 +161,7 @@ TEST_CASE("normal cones: query_positions and any-hit mode agree with the unculle
     CHECK(culled.pairs == ccd.query_positions(x0, x1, plain).pairs);
     CHECK(culled.stats.cone_culled > 0);
     sscc::SelfCcdOptions any;
+    sscc::set_traditional(any);
     any.mode = sscc::SelfCcdMode::kAnyHit;
     any.use_normal_cones = true;
     CHECK(ccd.query(q0, q1, any).collided() == ccd.query_exhaustive(q0, q1).collided());
