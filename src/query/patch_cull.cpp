@@ -83,4 +83,23 @@ bool PatchCull::cannot_touch(int a, int b) {
          pair_tests_.record(size, contour_stays_simple(joint.axis, union_chain_));
 }
 
+double mean_patch_at_rest(const SubspaceBvh& bvh, const NodeBoundaries& boundaries) {
+  const std::vector<Eigen::Vector3d>& rest = bvh.model().mesh().vertices();
+  PatchCull cull(bvh, boundaries, rest, rest, [](int) {});
+  long triangles = 0, patches = 0;
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    const SubspaceBvh::Node& node = bvh.nodes()[n];
+    if (cull.cannot_self_touch(n)) {
+      triangles += node.triangle_end - node.triangle_begin;
+      ++patches;
+    } else if (!node.is_leaf()) {
+      for (int c = node.first_child; c < node.first_child + node.child_count; ++c) stack.push_back(c);
+    }
+  }
+  return patches > 0 ? static_cast<double>(triangles) / static_cast<double>(patches) : 0.0;
+}
+
 }  // namespace sscc::detail

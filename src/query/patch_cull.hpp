@@ -115,6 +115,20 @@ inline constexpr int kSmallestUnionPart = 32;
 /// than the culls saved). Higher: more tests of lopsided pairs; lower: none after a failure.
 inline constexpr int kLargestUnionRatio = 4;
 
+/// Meshes whose patches proven at rest (the largest nodes the cull accepts for the rest shape
+/// held still) average fewer triangles than this are not given the cull: each accepted patch
+/// saves about what the normals of its triangles cost. Measured on the meshes of
+/// ../shared/data/meshes (mean patch at rest; the cones query's speed against the plain
+/// traversal at amplitudes 0.01 / 0.05 / 0.2): the elephant 11.3 triangles, 0.89x / 0.94x /
+/// 0.94x; the dragon 11.9, 1.04x / 1.00x / 0.97x; the knot 18.3, 1.12x / 1.11x / 1.01x; the
+/// lion 28.5, 1.25x / 1.24x / 1.09x; the 75k bunny 110, 1.58x / 1.38x / 1.00x. Lower: the
+/// cull where it costs more than it saves; higher: not where it pays.
+inline constexpr double kSmallestMeanRestPatch = 16.0;
+
+/// The mean triangle count of the largest nodes cannot_self_touch accepts for the rest shape
+/// (0 when none).
+double mean_patch_at_rest(const SubspaceBvh& bvh, const NodeBoundaries& boundaries);
+
 /// The cull for one query. Positions x0, x1 belong to the caller, who computes a triangle's
 /// vertices when asked through `ensure_triangle` (the triangle's position in the hierarchy's
 /// order); nothing here outlives the query. Cones are built bottom-up, once per node reached:

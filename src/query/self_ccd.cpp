@@ -558,11 +558,15 @@ class CullData {
  public:
   CullData(std::shared_ptr<const SubspaceBvh> bvh, std::shared_ptr<const Certificates> certificates)
       : bvh_(std::move(bvh)), certificates_(std::move(certificates)) {}
-  /// For a query with these options: null when it does not use the cones.
+  /// For a query with these options: null when it does not use the cones, or when they do
+  /// not pay on this mesh (patch_cull.hpp, kSmallestMeanRestPatch).
   const NodeBoundaries* boundaries(const SelfCcdOptions& options) {
     if (!options.use_normal_cones) return nullptr;
-    std::call_once(boundaries_once_, [&] { boundaries_ = std::make_unique<const NodeBoundaries>(*bvh_); });
-    return boundaries_.get();
+    std::call_once(boundaries_once_, [&] {
+      boundaries_ = std::make_unique<const NodeBoundaries>(*bvh_);
+      cones_pay_ = mean_patch_at_rest(*bvh_, *boundaries_) >= kSmallestMeanRestPatch;
+    });
+    return cones_pay_ ? boundaries_.get() : nullptr;
   }
   /// The fraction of the nodes of at least kSmallestCountedNode triangles whose certificates
   /// hold at norm s (s below their radius); 0 when there are none.
@@ -593,6 +597,7 @@ class CullData {
   std::once_flag boundaries_once_, displacement_once_, radii_once_;
   std::vector<double> radii_;  // sorted
   std::unique_ptr<const NodeBoundaries> boundaries_;
+  bool cones_pay_ = false;
   std::unique_ptr<const DisplacementBounds> displacement_;
 };
 
