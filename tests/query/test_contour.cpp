@@ -4,6 +4,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -162,6 +163,47 @@ TEST_CASE("contour: a union of two simple cycles is accepted only as the one sim
   CHECK(accepted > 200);
   CHECK(refused > 200);  // apart, meeting at vertices, or an annulus
   CHECK(simple_sums >= accepted);
+}
+
+TEST_CASE("contour: the union criterion holds on every pair of simple cycles over six vertices", "[contour]") {
+  // Chains no mesh of the grid test yields: shared edges of one direction, cancelled edges in
+  // several paths, cycles meeting only at vertices, 2-cycles. Accepted only when the sum is the
+  // net chain of both and one simple cycle.
+  using sscc::detail::boundary_chain;
+  using sscc::detail::is_simple_cycle;
+  constexpr int kVertices = 6;
+  std::vector<std::vector<DirectedEdge>> cycles;
+  for (int subset = 0; subset < (1 << kVertices); ++subset) {
+    std::vector<int> order;
+    for (int v = 0; v < kVertices; ++v) {
+      if (subset >> v & 1) order.push_back(v);
+    }
+    if (order.size() < 2) continue;
+    // Every cycle through the subset once: its smallest vertex first, the rest in each order.
+    do {
+      std::vector<DirectedEdge> chain;
+      for (std::size_t k = 0; k < order.size(); ++k) chain.push_back({order[k], order[(k + 1) % order.size()]});
+      std::sort(chain.begin(), chain.end());
+      cycles.push_back(chain);
+    } while (std::next_permutation(order.begin() + 1, order.end()));
+  }
+  REQUIRE(cycles.size() == 409);  // sum over k of C(6, k) (k - 1)!
+  long accepted = 0;
+  std::vector<DirectedEdge> sum;
+  for (const auto& a : cycles) {
+    for (const auto& b : cycles) {
+      if (!sscc::detail::union_is_simple_cycle(a, b, sum)) continue;
+      ++accepted;
+      std::sort(sum.begin(), sum.end());
+      REQUIRE(is_simple_cycle(sum));
+      // boundary_chain nets a 2-cycle's own edges to nothing; no node's chain is one.
+      if (a.size() == 2 || b.size() == 2) continue;
+      std::vector<DirectedEdge> both = a;
+      both.insert(both.end(), b.begin(), b.end());
+      REQUIRE(sum == boundary_chain(both));
+    }
+  }
+  CHECK(accepted > 10000);
 }
 
 TEST_CASE("contour: a loop winding twice, a reversed loop or a non-star loop is refused", "[contour]") {
