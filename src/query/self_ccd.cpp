@@ -623,6 +623,12 @@ const Certificates* usable(const Certificates* certificates, const SelfCcdOption
   return certificates;
 }
 
+/// Whether a step of norm s is far past the root's certificate, or there are none: the query
+/// then computes every vertex up front and runs on every thread.
+bool far_past_root(const Certificates* certificates, double s) {
+  return !certificates || s > kFarPastCertificateRatio * certificates->node_radius(0);
+}
+
 /// The report of a step the root's certificate decides: nothing touches.
 SelfCcdReport root_certified_report(std::chrono::steady_clock::time_point start) {
   SelfCcdStats stats;
@@ -646,7 +652,7 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   // the root's radius, certificates cull most of what the threads would share, while each
   // extra thread builds its own per-query state: one thread (measured on the audio-rate
   // spring, mean SSCC step 0.354 ms on 2 threads against 0.085 ms on one before this rule).
-  const bool far_past = !certificates || s > kFarPastCertificateRatio * certificates->node_radius(0);
+  const bool far_past = far_past_root(certificates, s);
   const int threads = far_past ? detail::resolve_threads(options.threads) : 1;
   // The displacement cull only without certificates: with them it culls what they cull, a
   // little later, at O(r) per node (measured on the default demo's traversed steps, 2.13 ms
@@ -674,13 +680,20 @@ void SelfCcd::prepare(const SelfCcdOptions& options) const {
   culls_->displacement(options, usable(certificates_.get(), options) != nullptr);
 }
 
+double SelfCcd::step_norm(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1) const {
+  const SubspaceModel& model = bvh_->model();
+  return std::max(model.scaled_coordinates(q0).stableNorm(), model.scaled_coordinates(q1).stableNorm());
+}
+
 bool SelfCcd::root_certifies(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                              const SelfCcdOptions& options) const {
   const Certificates* certificates = usable(certificates_.get(), options);
-  if (!certificates) return false;
-  const SubspaceModel& model = bvh_->model();
-  const double s = std::max(model.scaled_coordinates(q0).stableNorm(), model.scaled_coordinates(q1).stableNorm());
-  return s < certificates->node_radius(0);
+  return certificates && step_norm(q0, q1) < certificates->node_radius(0);
+}
+
+int SelfCcd::query_threads(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options) const {
+  const Certificates* certificates = usable(certificates_.get(), options);
+  return far_past_root(certificates, step_norm(q0, q1)) ? detail::resolve_threads(options.threads) : 1;
 }
 
 SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,

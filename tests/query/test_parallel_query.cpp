@@ -110,6 +110,16 @@ TEST_CASE("parallel self-CCD: with certificates, steps around the root radius", 
     }
   }
   CHECK(root_certified == 3);  // the steps at half the root radius, on four threads too
+  // The threads a query runs on: one within twice the root radius (kFarPastCertificateRatio),
+  // all beyond it and without certificates.
+  const auto threads_at = [&](double factor, bool certificates) {
+    const Eigen::VectorXd q = factor * root * Eigen::VectorXd::Unit(27, 3);
+    return ccd.query_threads(-q, q, with(sscc::SelfCcdMode::kAllContacts, sscc::NodeBounds::kHybrid, 4, certificates));
+  };
+  CHECK(threads_at(0.5, true) == 1);
+  CHECK(threads_at(1.5, true) == 1);
+  CHECK(threads_at(3.0, true) == 4);
+  CHECK(threads_at(0.5, false) == 4);
   CHECK(check_steps(ccd, steps) >= 1);
   // The traditional query on the same steps.
   for (const auto& step : steps) {

@@ -189,6 +189,11 @@ class SelfCcd {
   /// O(r)): false without usable certificates. Throws as query() does for a bad q.
   bool root_certifies(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
 
+  /// The threads query(q0, q1, options) runs on: every thread options.threads allows without
+  /// certificates or far past the root's, else one (certificates cull most of what threads
+  /// would share). For schedulers such as Scene::step. Throws as query() does for a bad q.
+  int query_threads(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
+
   /// The traditional query on explicit vertex positions at both ends of the step (each
   /// vertex moving linearly): for poses the subspace does not hold, where certificates do
   /// not apply. Simulators without a subspace use PositionCcd (position_ccd.hpp), built from
@@ -207,6 +212,8 @@ class SelfCcd {
                                  const SelfCcdOptions& options = {}) const;
 
  private:
+  /// max(||q_hat0||, ||q_hat1||), the scaled coordinates' norms (throws for a bad q).
+  double step_norm(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1) const;
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
   // What the normal-cone and displacement culls precompute, each on the first query that
