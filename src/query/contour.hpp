@@ -27,8 +27,8 @@ bool is_simple_cycle(const std::vector<DirectedEdge>& chain);
 
 /// Whether the boundary of the sum of two 2-chains whose boundaries a and b (sorted) are simple
 /// cycles is one simple cycle, in O(k log k) for k edges: then `sum` holds it (unsorted), a
-/// and b without the edges whose reverses the other holds. True only when it is (and on
-/// every simple sum the tests tried).
+/// and b without the edges whose reverses the other holds. True only when it is; false may
+/// also be a simple sum of chains glued along several paths (a handle), only a lost cull.
 ///
 /// Why c >= 1 cancelled edges and c + 1 shared vertices make one simple cycle: the cancelled
 /// edges P of a (their reverses in b) form m >= 1 disjoint paths over c + m vertices, all
@@ -36,7 +36,8 @@ bool is_simple_cycle(const std::vector<DirectedEdge>& chain);
 /// shared vertex is off P. P's inner vertices lose all four edges; each end keeps one edge of
 /// a and one of b, one entering and one leaving (a's edge on P enters it exactly when b's
 /// reverse leaves it); every other vertex keeps its two edges of one chain. a without P is one
-/// path between P's ends, b without P's reverse another, disjoint but for those ends.
+/// path between P's ends, b without P's reverse another, disjoint but for those ends; they
+/// are not one edge each, running opposite ways (that pair would have cancelled into P).
 bool union_is_simple_cycle(const std::vector<DirectedEdge>& a, const std::vector<DirectedEdge>& b,
                            std::vector<DirectedEdge>& sum);
 

@@ -203,7 +203,7 @@ DisplacementBounds::DisplacementBounds(const SubspaceBvh& bvh) : modes_(bvh.mode
   std::vector<int> counted;
   for (int n = 0; n < node_count; ++n) {
     const SubspaceBvh::Node& node = bvh.nodes()[n];
-    if (node.triangle_end - node.triangle_begin >= kSmallestSampledNode) counted.push_back(n);
+    if (node.triangle_end - node.triangle_begin >= kSmallestCountedNode) counted.push_back(n);
   }
   const std::size_t stride = counted.size() / kSampledNodes + 1;
   for (std::size_t k = 0; k < counted.size(); k += stride) sample_.push_back(counted[k]);

@@ -91,7 +91,7 @@ class DisplacementBounds {
   double largest_rest_coordinate() const { return largest_rest_coordinate_; }
   /// Per mode j, the largest absolute entry of the scaled basis's column j.
   const Eigen::VectorXd& largest_basis_entry() const { return largest_basis_entry_; }
-  /// At most kSampledNodes nodes of at least kSmallestSampledNode triangles, spread over the
+  /// At most kSampledNodes nodes of at least kSmallestCountedNode triangles, spread over the
   /// hierarchy: what StepDisplacement::apart_fraction tests.
   const std::vector<int>& sample() const { return sample_; }
 
@@ -114,9 +114,11 @@ inline constexpr int kSmallestAffineNode = 16;
 
 /// The sample by which a step judges how much of the hierarchy the displacement bounds cull
 /// (where they cull some, the normal cones are not used: self_ccd.cpp). 64 tests cost O(64 r),
-/// a few microseconds; nodes of fewer triangles than kSmallestSampledNode are not counted.
+/// a few microseconds.
 inline constexpr int kSampledNodes = 64;
-inline constexpr int kSmallestSampledNode = 2 * kMaxLeafTriangles;
+/// The nodes the per-step decisions on the cones count, here and for the certificates
+/// (self_ccd.cpp): two leaves' worth of triangles or more, the sizes the cones try.
+inline constexpr int kSmallestCountedNode = 2 * kMaxLeafTriangles;
 
 /// The cull for one step q_hat0 -> q_hat1 (scaled coordinates); nothing here outlives it.
 class StepDisplacement {

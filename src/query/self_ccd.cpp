@@ -51,16 +51,15 @@ using detail::swept_overlap;
 constexpr double kFarPastCertificateRatio = 2.0;
 
 /// With certificates, a step whose norm leaves more than this fraction of the nodes of at
-/// least kSmallestCountedNode triangles certified (s below their radius) uses no normal
-/// cones: the certificates cull most of the hierarchy, and a cone costs every normal under
-/// its node, most of them under certified subtrees. Leaves do not count: far past the
+/// least kSmallestCountedNode triangles (displacement_bound.hpp) certified (s below their
+/// radius) uses no normal cones: the certificates cull most of the hierarchy, and a cone
+/// costs every normal under its node, most of them under certified subtrees. Leaves do not count: far past the
 /// root's radius most of them stay certified while their pairs with neighbours, which they
 /// do not cover, make the traversal's work. Measured, one thread, median step: the dragon
 /// at amplitude 0.01 (nine in ten such nodes certified), 4.02 ms with cones against 2.97 ms
 /// without before this rule, 3.11 against 3.08 with it; the lion at 0.2 (none certified),
 /// 15.5 against 16.9 ms. Lower: fewer steps with cones; higher: cones where they cost.
 constexpr double kLargestCertifiedFractionForCones = 0.5;
-constexpr int kSmallestCountedNode = 2 * kMaxLeafTriangles;
 
 /// Without certificates, a step whose displacement bounds cull more than this fraction of a
 /// sample of nodes (DisplacementBounds::sample) uses no normal cones: a cone costs every normal
@@ -122,8 +121,10 @@ class StepContext {
     if (displacement && options.use_displacement_bounds && q_hat0.size() > 0) {
       displacement_ = std::make_unique<detail::StepDisplacement>(*displacement, bvh, q_hat0, q_hat1, separation_);
     }
-    const bool cones_pay = !displacement_ || displacement_->apart_fraction() <= kLargestApartFractionForCones;
-    if (boundaries && options.use_normal_cones && separation_ == 0.0 && cones_pay) {
+    const auto cones_pay = [&] {
+      return !displacement_ || displacement_->apart_fraction() <= kLargestApartFractionForCones;
+    };
+    if (boundaries && options.use_normal_cones && separation_ == 0.0 && cones_pay()) {
       patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, [this](int i) {
         for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
       });
@@ -574,7 +575,7 @@ class CullData {
     std::call_once(radii_once_, [&] {
       for (int n = 0; n < static_cast<int>(bvh_->nodes().size()); ++n) {
         const SubspaceBvh::Node& node = bvh_->nodes()[n];
-        if (node.triangle_end - node.triangle_begin >= kSmallestCountedNode)
+        if (node.triangle_end - node.triangle_begin >= detail::kSmallestCountedNode)
           radii_.push_back(certificates_->node_radius(n));
       }
       std::sort(radii_.begin(), radii_.end());
@@ -676,8 +677,10 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
 }
 
 void SelfCcd::prepare(const SelfCcdOptions& options) const {
+  const Certificates* certificates = usable(certificates_.get(), options);
   culls_->boundaries(options);
-  culls_->displacement(options, usable(certificates_.get(), options) != nullptr);
+  culls_->displacement(options, certificates != nullptr);
+  if (certificates && options.use_normal_cones) culls_->certified_fraction(0.0);
 }
 
 double SelfCcd::step_norm(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1) const {

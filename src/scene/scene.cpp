@@ -159,8 +159,9 @@ class Motions {
 
 namespace {
 
-/// The traditional self query on the world-space straight-line paths of the object's
-/// vertices, whose world positions are computed as between objects.
+/// The self query on the world-space straight-line paths of the object's vertices
+/// (SelfCcd::query_positions: no certificates), whose world positions are computed as between
+/// objects.
 SelfCcdReport world_linear_self_test(const SelfCcd& detector, const ObjectStep& s, const SelfCcdOptions& options) {
   detail::ObjectMotion motion(detector.bvh(), s);
   const int vertices = detector.bvh().model().mesh().vertex_count();

@@ -98,7 +98,7 @@ TEST_CASE("certificates: never above a known contact, in the weighted norm", "[c
     const Eigen::VectorXd touching = Eigen::Vector3d(1, 0, 0);
     const sscc::SelfCcd ccd(m->bvh, m->certificates);
     sscc::SelfCcdOptions traditional;
-    traditional.use_certificates = false;
+    sscc::set_traditional(traditional);
     REQUIRE(ccd.query_discrete(touching, traditional).collided());
     INFO("weight " << w << " root radius " << m->certificates.node_radius(0));
     REQUIRE(m->certificates.node_radius(0) <= std::sqrt(w));
@@ -128,7 +128,7 @@ TEST_CASE("certificates: the culled query reports exactly what the traditional o
   const auto m = sscc::test::certified_sphere();
   const sscc::SelfCcd ccd(m->bvh, m->certificates);
   sscc::SelfCcdOptions traditional;
-  traditional.use_certificates = false;
+  sscc::set_traditional(traditional);
   std::mt19937_64 rng(17);
   const double radius = m->certificates.node_radius(0);
   int certified = 0, partly = 0, colliding = 0;

@@ -41,7 +41,7 @@ TEST_CASE("certificates: contacts through rounding far from the origin are not c
     const double root = s.certificates.node_radius(0);
     CHECK(root <= 1.0);
     sscc::SelfCcdOptions traditional;
-    traditional.use_certificates = false;
+    sscc::set_traditional(traditional);
     // Steps from rest to just below the root radius and to points around the true contact.
     for (double q : {root * (1 - 1e-9), root * (1 - 1e-15), std::nextafter(root, 0.0), 1.0 - 1.2e-11, 1.0 - 1e-15, 1.0,
                      1.0 + 1e-12}) {

@@ -98,7 +98,7 @@ TEST_CASE("contour: a union of two simple cycles is accepted only as the one sim
   // Patches grown on a 10 x 10 grid (a torus when wrapped): pairs that share one path, several
   // paths (an annulus), only a vertex, or nothing.
   std::mt19937_64 rng(5);
-  int accepted = 0, refused = 0, simple_sums = 0;
+  int accepted = 0, refused = 0;
   for (const bool wrap : {false, true}) {
     const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(10, 10, wrap, wrap);
     const int n = static_cast<int>(triangles.size());
@@ -147,7 +147,6 @@ TEST_CASE("contour: a union of two simple cycles is accepted only as the one sim
       const auto chain_b = boundary_chain(edges_of(tb));
       if (!is_simple_cycle(chain_a) || !is_simple_cycle(chain_b)) continue;
       const auto reference = boundary_chain(edges_of(both));
-      simple_sums += is_simple_cycle(reference);
       std::vector<DirectedEdge> sum;
       if (!sscc::detail::union_is_simple_cycle(chain_a, chain_b, sum)) {
         ++refused;
@@ -162,7 +161,6 @@ TEST_CASE("contour: a union of two simple cycles is accepted only as the one sim
   }
   CHECK(accepted > 200);
   CHECK(refused > 200);  // apart, meeting at vertices, or an annulus
-  CHECK(simple_sums >= accepted);
 }
 
 TEST_CASE("contour: the union criterion holds on every pair of simple cycles over six vertices", "[contour]") {

@@ -80,7 +80,7 @@ TEST_CASE("excluded pairs: certificates and queries equal exhaustive testing wit
   const TouchingModel m;
   std::mt19937_64 rng(5);
   sscc::SelfCcdOptions traditional;
-  traditional.use_certificates = false;
+  sscc::set_traditional(traditional);
   sscc::SelfCcdOptions one_thread;
   one_thread.threads = 1;
   sscc::SelfCcdOptions cones;  // the cones alone

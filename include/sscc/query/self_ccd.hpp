@@ -105,9 +105,11 @@ struct SelfCcdOptions {
   /// cone and whose contour stays one simple polygon in projection over the step: proven free
   /// of self-contact (src/query/patch_cull.hpp states the theorem). Exact, like every cull
   /// here. Not applied with a minimum separation (it proves no contact, not a distance) nor to
-  /// query_discrete. With certificates, tried on the nodes they do not cull, on steps that
-  /// leave most of the hierarchy to the traversal (src/query/self_ccd.cpp). On the benchmark
-  /// meshes the plain traversal with cones ran at 0.96x (the coarse elephant) to 1.5x its
+  /// query_discrete. Used on meshes whose patches proven at rest average 16 triangles or more
+  /// (src/query/patch_cull.hpp, kSmallestMeanRestPatch), and there on the steps that the
+  /// certificates, or without them the displacement bounds, leave mostly to the traversal
+  /// (src/query/self_ccd.cpp); with certificates, on the nodes they do not cull. On the
+  /// benchmark meshes where they are used, the plain traversal with cones ran at 1.01x to 1.60x its
   /// speed without (README, the self-CCD table).
   bool use_normal_cones = true;
   /// Skip nodes, and pairs of nodes, whose triangles the step's deformation moves too little,
@@ -181,8 +183,10 @@ class SelfCcd {
   SelfCcdReport query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
 
   /// Builds what queries with these options precompute on their first use (the normal
-  /// cones' boundary chains, the displacement bounds' rest clearances and affine fits: 0.1 s on
-  /// a 15k-triangle mesh), so that no query pays for it. Optional; thread-safe.
+  /// cones' boundary chains and patches at rest, the certificates' sorted radii, the
+  /// displacement bounds' rest clearances and affine fits: 0.1 s on a 15k-triangle mesh), so
+  /// that no query pays for it. Optional; thread-safe. Without it the first query with the
+  /// defaults takes that much longer (the lion: 23 ms against 8 ms for the next ones).
   void prepare(const SelfCcdOptions& options = {}) const;
 
   /// Whether the root's certificate alone decides the step (what query() then reports in

@@ -11,7 +11,8 @@
 //    own frame and the frame moves rigidly, which changes no self contact (SelfCcd::query,
 //    certificates included);
 //    SelfMotion::kWorldLinear: each vertex moves on the straight line between its world
-//    positions at the two ends, as between objects (the traditional query on those paths);
+//    positions at the two ends, as between objects (SelfCcd::query_positions on those
+//    paths: no certificates);
 //  - collisions between objects, for world-space linear vertex trajectories: each vertex
 //    moves on the straight line between its world positions at the two ends of the step
 //    (the usual linearisation of a rigid motion over a step), found by a swept-box
@@ -99,8 +100,8 @@ struct ObjectStep {
 };
 
 /// The options of a step: those of the self queries, applied to every object's self test
-/// (mode for the whole step; use_certificates and use_normal_cones both false make every
-/// self test the traditional query; bounds; the kernels' options, also used between
+/// (mode for the whole step; set_traditional makes every self test the traditional query;
+/// bounds; the kernels' options, also used between
 /// objects). `threads` are the step's: 0 uses every thread OpenMP may use (the cores, or
 /// OMP_NUM_THREADS), 1 runs everything on the caller's thread. The report does not depend
 /// on it; the statistics' vertex counts and times may (self_seconds and inter_seconds add
