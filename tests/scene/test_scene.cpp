@@ -349,3 +349,35 @@ TEST_CASE("scene: reports equal on every thread count, in every mode, with certi
   CHECK(colliding >= 3);
   CHECK(one_traversal >= 1);
 }
+
+TEST_CASE("scene: an error inside the tasks is the first in task order on every thread count", "[scene][parallel]") {
+  // The kernels refuse a zero toi_tolerance when first called, naming their kind. Object 0's
+  // world-linear self test (task 0) first calls a vertex-face kernel, object 1's object-frame
+  // self test without certificates (task 1, which would traverse on every thread) an edge-edge
+  // one: the step must report task 0's error as one thread does.
+  const Fixture f;
+  sscc::Scene scene;
+  scene.add_object(f.ccd, {true, false, sscc::SelfMotion::kWorldLinear});
+  scene.add_object(f.ccd, {true, false, sscc::SelfMotion::kObjectFrame});
+  std::mt19937_64 rng(1);
+  std::vector<sscc::ObjectStep> steps = random_steps(rng, 0.9, 0.0);
+  steps.pop_back();
+  steps[1].frame0 = steps[1].frame1 = frame(Eigen::Vector3d::UnitZ(), 0.0, Eigen::Vector3d(10, 0, 0));
+  sscc::SceneOptions options;
+  options.kernel.toi_tolerance = 0.0;
+  const auto error = [&](int threads) -> std::string {
+    options.threads = threads;
+    try {
+      scene.step(steps, options);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const std::string serial = error(1);
+  REQUIRE_THAT(serial, Catch::Contains("toi_tolerance"));
+  for (int threads : {2, 3}) {
+    INFO("threads " << threads);
+    CHECK(error(threads) == serial);
+  }
+}
