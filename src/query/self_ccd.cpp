@@ -53,12 +53,14 @@ constexpr double kFarPastCertificateRatio = 2.0;
 /// With certificates, a step whose norm leaves more than this fraction of the nodes of at
 /// least kSmallestCountedNode triangles (displacement_bound.hpp) certified (s below their
 /// radius) uses no normal cones: the certificates cull most of the hierarchy, and a cone
-/// costs every normal under its node, most of them under certified subtrees. Leaves do not count: far past the
-/// root's radius most of them stay certified while their pairs with neighbours, which they
-/// do not cover, make the traversal's work. Measured, one thread, median step: the dragon
-/// at amplitude 0.01 (nine in ten such nodes certified), 4.02 ms with cones against 2.97 ms
-/// without before this rule, 3.11 against 3.08 with it; the lion at 0.2 (none certified),
-/// 15.5 against 16.9 ms. Lower: fewer steps with cones; higher: cones where they cost.
+/// costs every normal under its node, most of them under certified subtrees. Leaves do not
+/// count: far past the root's radius most of them stay certified while their pairs with
+/// neighbours, which they do not cover, make the traversal's work. Measured, one thread,
+/// median step, before the per-mesh rule (patch_cull.hpp, kSmallestMeanRestPatch) kept the
+/// cones off the dragon: the dragon at amplitude 0.01 (nine in ten such nodes certified),
+/// 4.02 ms with cones against 2.97 ms without before this rule, 3.11 against 3.08 with it;
+/// the lion at 0.2 (none certified), 15.5 against 16.9 ms. Lower: fewer steps with cones;
+/// higher: cones where they cost.
 constexpr double kLargestCertifiedFractionForCones = 0.5;
 
 /// Without certificates, a step whose displacement bounds cull more than this fraction of a

@@ -258,3 +258,37 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
   CHECK(accepted_nodes > 10);
   CHECK(accepted_pairs >= 3);  // parts of 32 to 64 triangles (patch_cull.hpp): few in these meshes
 }
+
+TEST_CASE("normal cones: not used on a mesh whose patches at rest are small, used on one whose are large",
+          "[patch_cull][query]") {
+  // A coarse torus (few triangles per curved patch) pinching, and the fine folding sheet of
+  // the tests above folding; both report what exhaustive testing does.
+  struct Case {
+    Keyframes frames;
+    bool expect_cones;
+  };
+  const std::vector<Case> all = {{{"coarse torus", 12, 4, true, true, {pinched_torus(0.0), pinched_torus(0.3)}}, false},
+                                 {{"sheet", 16, 5, false, false, {folded_sheet(0.0), folded_sheet(0.5)}}, true}};
+  for (const Case& c : all) {
+    const Keyframes& k = c.frames;
+    std::vector<std::vector<Vector3d>> frames;
+    for (const Surface& shape : k.shapes)
+      frames.push_back(sscc::test::grid_positions(k.nu, k.nv, k.wrap_u, k.wrap_v, shape));
+    const sscc::SubspaceModel model =
+        sscc::test::keyframe_model(sscc::test::grid_triangles(k.nu, k.nv, k.wrap_u, k.wrap_v), frames);
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const double mean = sscc::detail::mean_patch_at_rest(bvh, boundaries);
+    INFO(k.name << ": mean patch at rest " << mean);
+    CHECK((mean >= sscc::detail::kSmallestMeanRestPatch) == c.expect_cones);
+    const sscc::SelfCcd ccd(bvh);
+    sscc::SelfCcdOptions cones;
+    sscc::set_traditional(cones);
+    cones.use_normal_cones = true;
+    const int modes = model.mode_count();
+    const Eigen::VectorXd q0 = sscc::test::keyframe_q(modes, 0), q1 = sscc::test::keyframe_q(modes, 1);
+    const sscc::SelfCcdReport report = ccd.query(q0, q1, cones);
+    CHECK(report.pairs == ccd.query_exhaustive(q0, q1).pairs);
+    CHECK((report.stats.cone_culled > 0) == c.expect_cones);
+  }
+}
