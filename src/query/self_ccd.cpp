@@ -89,15 +89,39 @@ SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<
   return report;
 }
 
+/// Every vertex's positions at both ends of a step, computed once for all the threads of a
+/// query (each computes a share) and then only read.
+struct StepPositions {
+  std::vector<Eigen::Vector3d> x0, x1;
+  StepPositions(const SubspaceModel& model, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1,
+                int threads)
+      : x0(model.mesh().vertex_count()), x1(model.mesh().vertex_count()) {
+    const int count = model.mesh().vertex_count();
+    // Vertex order within each block streams the basis rows (self_ccd.cpp, StepContext).
+    const int blocks = std::min(threads, std::max(1, count / kVerticesPerBlock));
+    detail::run_tasks(blocks, blocks, [&](int block, int) {
+      const int end = static_cast<int>(static_cast<long>(count) * (block + 1) / blocks);
+      for (int v = static_cast<int>(static_cast<long>(count) * block / blocks); v < end; ++v) {
+        model.position_pair(v, q_hat0, q_hat1, x0[v], x1[v]);
+      }
+    });
+  }
+  /// Fewer vertices per thread than this are computed on fewer threads: opening a parallel
+  /// region costs about as much as a thousand vertices of a 30-mode basis.
+  static constexpr int kVerticesPerBlock = 1024;
+};
+
 /// What every query needs per call: the positions computed so far, the feature results,
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
  public:
   /// s = max(||q_hat0||, ||q_hat1||). `boundaries` null: no normal-cone cull; `every_vertex`:
-  /// compute every vertex up front (the traversal will reach nearly all), else on demand.
+  /// compute every vertex up front (the traversal will reach nearly all), else on demand;
+  /// `shared`: every vertex already computed there (the caller keeps it alive; every_vertex
+  /// is then moot).
   StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
               const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, bool every_vertex,
-              const detail::DisplacementBounds* displacement = nullptr)
+              const detail::DisplacementBounds* displacement = nullptr, StepPositions* shared = nullptr)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
@@ -107,9 +131,11 @@ class StepContext {
         separation_(options.kernel.minimum_separation),
         norm0_(q_hat0.stableNorm()),
         norm1_(q_hat1.stableNorm()),
-        x0_(mesh_.vertex_count()),
-        x1_(mesh_.vertex_count()),
-        computed_(mesh_.vertex_count(), 0),
+        own_x0_(shared ? 0 : mesh_.vertex_count()),
+        own_x1_(shared ? 0 : mesh_.vertex_count()),
+        x0_(shared ? shared->x0.data() : own_x0_.data()),
+        x1_(shared ? shared->x1.data() : own_x1_.data()),
+        computed_(mesh_.vertex_count(), shared ? 1 : 0),
         subspace_boxes_(bvh.nodes().size()),
         node_sweeps_(bvh.nodes().size()),
         triangle_sweeps_(mesh_.triangle_count()),
@@ -117,7 +143,7 @@ class StepContext {
     // One pass in vertex order streams the basis once, where computing vertices on demand
     // reads its rows in the hierarchy's order (measured on the 75k-triangle bunny without
     // certificates: a quarter of the query's time went to those reads).
-    if (every_vertex && q_hat0.size() > 0) {
+    if (every_vertex && !shared && q_hat0.size() > 0) {
       for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
     }
     if (displacement && options.use_displacement_bounds && q_hat0.size() > 0) {
@@ -127,7 +153,8 @@ class StepContext {
       return !displacement_ || displacement_->apart_fraction() <= kLargestApartFractionForCones;
     };
     if (boundaries && options.use_normal_cones && separation_ == 0.0 && cones_pay()) {
-      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, x0_, x1_, [this](int i) {
+      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, shared ? shared->x0 : own_x0_,
+                                                        shared ? shared->x1 : own_x1_, [this](int i) {
         for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
       });
     }
@@ -138,8 +165,10 @@ class StepContext {
   StepContext(const SubspaceBvh& bvh, std::vector<Eigen::Vector3d> x0, std::vector<Eigen::Vector3d> x1,
               const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries)
       : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, boundaries, false) {
-    x0_ = std::move(x0);
-    x1_ = std::move(x1);
+    own_x0_ = std::move(x0);
+    own_x1_ = std::move(x1);
+    x0_ = own_x0_.data();
+    x1_ = own_x1_.data();
     std::fill(computed_.begin(), computed_.end(), 1);
   }
 
@@ -343,7 +372,11 @@ class StepContext {
   double s_;
   double separation_;  // every cull widened by the kernels' minimum separation
   double norm0_, norm1_;
-  std::vector<Eigen::Vector3d> x0_, x1_;
+  std::vector<Eigen::Vector3d> own_x0_, own_x1_;  // unless the positions are shared
+  // The positions read: the shared ones or the own (raw pointers: the hot loops read them
+  // without the vectors' indirection).
+  Eigen::Vector3d* x0_;
+  Eigen::Vector3d* x1_;
   std::vector<char> computed_;
   LazyBoxes<Aabb> subspace_boxes_;
   LazyBoxes<Sweep> node_sweeps_;
@@ -668,10 +701,16 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
       certificates && culls_->certified_fraction(s) > kLargestCertifiedFractionForCones ? nullptr
                                                                                         : culls_->boundaries(options);
   if (threads > 1) {
+    // Far past the root's certificate (threads > 1 only there) nearly every vertex is
+    // reached: computed once, a share per thread, instead of once by every thread's context.
+    StepPositions positions(bvh_->model(), q_hat0, q_hat1, threads);
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries, far_past, displacement);
+      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries, far_past, displacement,
+                                           &positions);
     };
-    return parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
+    SelfCcdReport report = parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
+    report.stats.vertices_computed += bvh_->model().mesh().vertex_count();
+    return report;
   }
   StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries, far_past, displacement);
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);

@@ -17,10 +17,11 @@
 
 namespace sscc::detail {
 
-/// Box of triangle t at positions x.
-inline Aabb box_at(const std::vector<Eigen::Vector3d>& x, const Triangle& t) {
+/// Box of triangle t at positions x (indexed by vertex).
+inline Aabb box_at(const Eigen::Vector3d* x, const Triangle& t) {
   return {x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]), x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]])};
 }
+inline Aabb box_at(const std::vector<Eigen::Vector3d>& x, const Triangle& t) { return box_at(x.data(), t); }
 
 /// Node boxes computed on first use (each at most once per query). The boxes start
 /// default-initialised (not zeroed: most are never read), the flags zeroed.

@@ -124,7 +124,8 @@ struct SelfCcdOptions {
   /// Threads for one query: 0 uses every thread OpenMP may use (the cores, or
   /// OMP_NUM_THREADS), 1 the serial traversal. The report is the same for every count, in
   /// the same order, first hits included; only the statistics differ (work that several
-  /// threads repeat, such as vertex positions, counts once per thread). query_discrete and
+  /// threads repeat, such as node and triangle boxes, counts once per thread; the vertex
+  /// positions are computed once, shared by the threads). query_discrete and
   /// query_exhaustive run on one thread.
   int threads = 0;
   /// The kernels' options. A minimum separation (kernel.minimum_separation > 0) cannot be
