@@ -42,6 +42,7 @@ py::dict stats_dict(const SelfCcdStats& s) {
   d["vertices_computed"] = s.vertices_computed;
   d["certified"] = s.certified;
   d["cone_culled"] = s.cone_culled;
+  d["cone_radius_culled"] = s.cone_radius_culled;
   d["displacement_culled"] = s.displacement_culled;
   d["root_certified"] = s.root_certified;
   d["seconds"] = s.seconds;

@@ -91,8 +91,12 @@ bool union_is_simple_cycle(const std::vector<DirectedEdge>& a, const std::vector
 }
 
 NodeBoundaries::NodeBoundaries(const SubspaceBvh& bvh)
-    : chains_(bvh.nodes().size()), simple_cycle_(bvh.nodes().size(), 0) {
+    : chains_(bvh.nodes().size()), simple_cycle_(bvh.nodes().size(), 0), parents_(bvh.nodes().size(), -1) {
   const TriangleMesh& mesh = bvh.model().mesh();
+  for (std::size_t n = 0; n < bvh.nodes().size(); ++n) {
+    const SubspaceBvh::Node& node = bvh.nodes()[n];
+    for (int c = node.first_child; c < node.first_child + node.child_count; ++c) parents_[c] = static_cast<int>(n);
+  }
   // Children follow their parent in the node array: fill from the back.
   for (int n = static_cast<int>(bvh.nodes().size()) - 1; n >= 0; --n) {
     const SubspaceBvh::Node& node = bvh.nodes()[n];

@@ -42,16 +42,20 @@ bool union_is_simple_cycle(const std::vector<DirectedEdge>& a, const std::vector
                            std::vector<DirectedEdge>& sum);
 
 /// Each node's boundary chain and whether it is a simple cycle, from connectivity alone
-/// (fixed for the hierarchy; built once). Children's chains summed give the parent's.
+/// (fixed for the hierarchy; built once). Children's chains summed give the parent's. Also
+/// each node's parent, for the patches of patch_radius.hpp.
 class NodeBoundaries {
  public:
   explicit NodeBoundaries(const SubspaceBvh& bvh);
   const std::vector<DirectedEdge>& chain(int n) const { return chains_[n]; }
   bool simple_cycle(int n) const { return simple_cycle_[n] != 0; }
+  /// Node n's parent; -1 for the root.
+  int parent(int n) const { return parents_[n]; }
 
  private:
   std::vector<std::vector<DirectedEdge>> chains_;
   std::vector<char> simple_cycle_;
+  std::vector<int> parents_;
 };
 
 /// Whether the boundary chain `chain` (a cycle: every vertex entered as often as left), seen

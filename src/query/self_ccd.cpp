@@ -20,6 +20,7 @@
 #include "query/displacement_bound.hpp"
 #include "query/feature_hits.hpp"
 #include "query/patch_cull.hpp"
+#include "query/patch_radius.hpp"
 #include "query/sweep.hpp"
 #include "query/task_frontier.hpp"
 #include "sscc/ccd/kernels.hpp"
@@ -93,8 +94,7 @@ SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<
 /// query (each computes a share) and then only read.
 struct StepPositions {
   std::vector<Eigen::Vector3d> x0, x1;
-  StepPositions(const SubspaceModel& model, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1,
-                int threads)
+  StepPositions(const SubspaceModel& model, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, int threads)
       : x0(model.mesh().vertex_count()), x1(model.mesh().vertex_count()) {
     const int count = model.mesh().vertex_count();
     // Vertex order within each block streams the basis rows (self_ccd.cpp, StepContext).
@@ -111,17 +111,22 @@ struct StepPositions {
   static constexpr int kVerticesPerBlock = 1024;
 };
 
+/// The static data of the culls a query uses (CullData), each null when it does not.
+struct StepCulls {
+  const detail::NodeBoundaries* boundaries = nullptr;  // the normal cones formed per step
+  const detail::PatchRadii* radii = nullptr;           // the normal cones bounded from the norm
+  const detail::DisplacementBounds* displacement = nullptr;
+};
+
 /// What every query needs per call: the positions computed so far, the feature results,
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
  public:
-  /// s = max(||q_hat0||, ||q_hat1||). `boundaries` null: no normal-cone cull; `every_vertex`:
-  /// compute every vertex up front (the traversal will reach nearly all), else on demand;
-  /// `shared`: every vertex already computed there (the caller keeps it alive; every_vertex
-  /// is then moot).
+  /// s = max(||q_hat0||, ||q_hat1||). `every_vertex`: compute every vertex up front (the
+  /// traversal will reach nearly all), else on demand; `shared`: every vertex already
+  /// computed there (the caller keeps it alive; every_vertex is then moot).
   StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
-              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, bool every_vertex,
-              const detail::DisplacementBounds* displacement = nullptr, StepPositions* shared = nullptr)
+              const SelfCcdOptions& options, const StepCulls& culls, bool every_vertex, StepPositions* shared = nullptr)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
@@ -146,17 +151,22 @@ class StepContext {
     if (every_vertex && !shared && q_hat0.size() > 0) {
       for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
     }
-    if (displacement && options.use_displacement_bounds && q_hat0.size() > 0) {
-      displacement_ = std::make_unique<detail::StepDisplacement>(*displacement, bvh, q_hat0, q_hat1, separation_);
+    if (culls.displacement && options.use_displacement_bounds && q_hat0.size() > 0) {
+      displacement_ = std::make_unique<detail::StepDisplacement>(*culls.displacement, bvh, q_hat0, q_hat1, separation_);
     }
     const auto cones_pay = [&] {
       return !displacement_ || displacement_->apart_fraction() <= kLargestApartFractionForCones;
     };
-    if (boundaries && options.use_normal_cones && separation_ == 0.0 && cones_pay()) {
-      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *boundaries, shared ? shared->x0 : own_x0_,
+    if (culls.radii && options.use_normal_cones && separation_ == 0.0 && q_hat0.size() > 0 &&
+        s < culls.radii->largest_radius()) {
+      radii_ = culls.radii;
+    }
+    if (culls.boundaries && options.use_normal_cones && separation_ == 0.0 && cones_pay()) {
+      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *culls.boundaries, shared ? shared->x0 : own_x0_,
                                                         shared ? shared->x1 : own_x1_, [this](int i) {
-        for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
-      });
+                                                          for (int v : mesh_.triangles()[bvh_.triangle_order()[i]])
+                                                            ensure_vertex(v);
+                                                        });
     }
   }
 
@@ -164,7 +174,7 @@ class StepContext {
   /// hold): every vertex known, boxes refitted.
   StepContext(const SubspaceBvh& bvh, std::vector<Eigen::Vector3d> x0, std::vector<Eigen::Vector3d> x1,
               const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries)
-      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, boundaries, false) {
+      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, StepCulls{boundaries}, false) {
     own_x0_ = std::move(x0);
     own_x1_ = std::move(x1);
     x0_ = own_x0_.data();
@@ -185,9 +195,18 @@ class StepContext {
   }
   bool stopped() const { return hits_.stopped() || (cancel_ && cancel_->cancels(task_)); }
   SelfCcdStats& stats() { return stats_; }
-  /// The normal-cone cull (patch_cull.hpp) of a node, and of the union of two nodes.
-  bool node_cannot_self_touch(int n) { return patch_cull_ && patch_cull_->cannot_self_touch(n); }
-  bool nodes_cannot_touch(int a, int b) { return patch_cull_ && patch_cull_->cannot_touch(a, b); }
+  /// The normal-cone cull of a node, and of the union of two nodes: bounded from the step's
+  /// norm (patch_radius.hpp), else formed from the positions (patch_cull.hpp).
+  bool node_cannot_self_touch(int n) {
+    if (radii_ && s_ < radii_->node_radius(n)) return ++stats_.cone_radius_culled, true;
+    return patch_cull_ && patch_cull_->cannot_self_touch(n);
+  }
+  bool nodes_cannot_touch(int a, int b) {
+    if (radii_ && radii_->pair_may_exceed(a, b, s_) && s_ < radii_->pair_radius(a, b)) {
+      return ++stats_.cone_radius_culled, true;
+    }
+    return patch_cull_ && patch_cull_->cannot_touch(a, b);
+  }
   /// The displacement cull (displacement_bound.hpp) of a node, and of two nodes.
   bool node_held_apart(int n) { return displacement_ && displacement_->node_apart(n); }
   bool nodes_held_apart(int a, int b) { return displacement_ && displacement_->nodes_apart(a, b); }
@@ -383,7 +402,8 @@ class StepContext {
   LazyBoxes<Sweep> triangle_sweeps_;  // by position in the BVH's triangle order
   FeatureHits<FeatureContact> hits_;
   SelfCcdStats stats_;
-  std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no normal-cone cull
+  const detail::PatchRadii* radii_ = nullptr;               // null: no cones bounded from the norm
+  std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no cones formed per step
   std::unique_ptr<detail::StepDisplacement> displacement_;  // null: no displacement cull
   const detail::FirstHitTask* cancel_ = nullptr;
   int task_ = 0;
@@ -598,10 +618,7 @@ class CullData {
   /// not pay on this mesh (patch_cull.hpp, kSmallestMeanRestPatch).
   const NodeBoundaries* boundaries(const SelfCcdOptions& options) {
     if (!options.use_normal_cones) return nullptr;
-    std::call_once(boundaries_once_, [&] {
-      boundaries_ = std::make_unique<const NodeBoundaries>(*bvh_);
-      cones_pay_ = mean_patch_at_rest(*bvh_, *boundaries_) >= kSmallestMeanRestPatch;
-    });
+    build_boundaries();
     return cones_pay_ ? boundaries_.get() : nullptr;
   }
   /// The fraction of the nodes of at least kSmallestCountedNode triangles whose certificates
@@ -619,6 +636,16 @@ class CullData {
     const auto above = radii_.end() - std::upper_bound(radii_.begin(), radii_.end(), s);
     return static_cast<double>(above) / static_cast<double>(radii_.size());
   }
+  /// Null when the query does not use the cones. Built on any mesh: they cost O(1) per node
+  /// per query, so kSmallestMeanRestPatch does not apply.
+  const PatchRadii* radii(const SelfCcdOptions& options) {
+    if (!options.use_normal_cones) return nullptr;
+    std::call_once(patch_radii_once_, [&] {
+      build_boundaries();
+      patch_radii_ = std::make_unique<const PatchRadii>(*bvh_, *boundaries_);
+    });
+    return patch_radii_.get();
+  }
   /// Null when the query does not use the displacement bounds (they are not used with
   /// certificates: self_ccd.cpp, SelfCcd::query).
   const DisplacementBounds* displacement(const SelfCcdOptions& options, bool with_certificates) {
@@ -628,13 +655,21 @@ class CullData {
   }
 
  private:
+  void build_boundaries() {
+    std::call_once(boundaries_once_, [&] {
+      boundaries_ = std::make_unique<const NodeBoundaries>(*bvh_);
+      cones_pay_ = mean_patch_at_rest(*bvh_, *boundaries_) >= kSmallestMeanRestPatch;
+    });
+  }
+
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
-  std::once_flag boundaries_once_, displacement_once_, radii_once_;
+  std::once_flag boundaries_once_, displacement_once_, radii_once_, patch_radii_once_;
   std::vector<double> radii_;  // sorted
   std::unique_ptr<const NodeBoundaries> boundaries_;
   bool cones_pay_ = false;
   std::unique_ptr<const DisplacementBounds> displacement_;
+  std::unique_ptr<const PatchRadii> patch_radii_;
 };
 
 }  // namespace detail
@@ -693,26 +728,27 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   // The displacement cull only without certificates: with them it culls what they cull, a
   // little later, at O(r) per node (measured on the default demo's traversed steps, 2.13 ms
   // per step with it against 2.02 ms without; without certificates 6.0 ms against 9.1 ms).
-  const detail::DisplacementBounds* displacement = culls_->displacement(options, certificates != nullptr);
   // The normal cones only where the certificates leave most of the hierarchy to the
   // traversal: a cone costs every normal under its node, which is wasted under certified
   // subtrees.
-  const detail::NodeBoundaries* boundaries =
-      certificates && culls_->certified_fraction(s) > kLargestCertifiedFractionForCones ? nullptr
-                                                                                        : culls_->boundaries(options);
+  StepCulls culls;
+  culls.displacement = culls_->displacement(options, certificates != nullptr);
+  culls.boundaries = certificates && culls_->certified_fraction(s) > kLargestCertifiedFractionForCones
+                         ? nullptr
+                         : culls_->boundaries(options);
+  culls.radii = culls_->radii(options);
   if (threads > 1) {
     // Far past the root's certificate (threads > 1 only there) nearly every vertex is
     // reached: computed once, a share per thread, instead of once by every thread's context.
     StepPositions positions(bvh_->model(), q_hat0, q_hat1, threads);
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, boundaries, far_past, displacement,
-                                           &positions);
+      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, culls, far_past, &positions);
     };
     SelfCcdReport report = parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
     report.stats.vertices_computed += bvh_->model().mesh().vertex_count();
     return report;
   }
-  StepContext context(*bvh_, q_hat0, q_hat1, s, options, boundaries, far_past, displacement);
+  StepContext context(*bvh_, q_hat0, q_hat1, s, options, culls, far_past);
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
@@ -720,6 +756,7 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
 void SelfCcd::prepare(const SelfCcdOptions& options) const {
   const Certificates* certificates = usable(certificates_.get(), options);
   culls_->boundaries(options);
+  culls_->radii(options);
   culls_->displacement(options, certificates != nullptr);
   if (certificates && options.use_normal_cones) culls_->certified_fraction(0.0);
 }
@@ -786,7 +823,7 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const auto start = std::chrono::steady_clock::now();
   const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
-  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, nullptr,
+  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, StepCulls{},
                       true);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair

@@ -60,6 +60,7 @@ inline void add_counts(SelfCcdStats& a, const SelfCcdStats& b) {
   a.vertices_computed += b.vertices_computed;
   a.certified += b.certified;
   a.cone_culled += b.cone_culled;
+  a.cone_radius_culled += b.cone_radius_culled;
   a.displacement_culled += b.displacement_culled;
 }
 

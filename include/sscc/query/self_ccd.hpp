@@ -149,6 +149,7 @@ struct SelfCcdStats {
   long vertices_computed = 0;
   long certified = 0;            ///< nodes and sibling pairs culled by a certificate
   long cone_culled = 0;          ///< nodes and node pairs culled by the normal-cone test
+  long cone_radius_culled = 0;   ///< of those, culled from the step's norm alone (patch radii)
   long displacement_culled = 0;  ///< nodes and node pairs culled by the displacement bounds
   bool root_certified = false;   ///< the whole step decided by the root's certificate
   double seconds = 0.0;

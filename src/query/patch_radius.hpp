@@ -1,0 +1,103 @@
+// The normal-cone cull of patch_cull.hpp for reduced models, decided from the step's norm in
+// O(1) per node: each patch proven at rest gets a radius S, and a step whose ends' scaled
+// norms stay below S satisfies the theorem's hypotheses (patch_cull.hpp) for the positions the
+// query computes, at every t. No normal or contour is formed per step. Private to the library;
+// SelfCcd::query uses it when SelfCcdOptions::use_normal_cones.
+//
+// THEOREM. Let S be a set of triangles whose boundary chain is a simple cycle, d a unit vector
+// and q_hat any coordinates with ||q_hat|| <= s (scaled coordinates: x_v = p_v + U_hat_v q_hat).
+// The positions a query computes are x_v(q_hat) + e_v with |e_v| <= eta(s) = eta0 + eta1 s
+// (below). Both hypotheses of patch_cull.hpp hold for every straight-line step whose ends have
+// norm at most s, for the computed positions at every t, if s is below both radii:
+//  (i)  triangle T (edges e1 = x1 - x0, e2 = x2 - x0 at rest, E1 = U_hat_1 - U_hat_0 and
+//       E2 = U_hat_2 - U_hat_0, 3 x r) has d . n_T > 0 for every such configuration when
+//         c_T > A_T s + B_T s^2 + 2 eta (L0 + L1 s) + 4 eta^2,
+//       c_T = d . (e1 x e2), A_T = |E2^T (d x e1) + E1^T (e2 x d)|, B_T the product of the two
+//       smallest of ||E1||_F, ||E2||_F, ||E3||_F (E3 = E2 - E1), L0 = |e1| + |e2|,
+//       L1 = ||E1||_F + ||E2||_F.
+//       Why: d . n(q_hat) = c_T + q_hat . (E2^T (d x e1) + E1^T (e2 x d)) + d . ((E1 q_hat) x
+//       (E2 q_hat)), and (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E3 q) x (E2 q), each bounded by
+//       Cauchy-Schwarz; a computed edge is off by at most 2 eta, which moves the cross product
+//       by at most 2 eta (|e1(q_hat)| + |e2(q_hat)|) + 4 eta^2.
+//       The condition is a quadratic in s: below its positive root it holds.
+//  (ii) the projection along d of the boundary stays one simple closed polygon for every t of
+//       the step when it is one at rest and, for every boundary vertex p and boundary edge
+//       (a, b) not containing p, at rest distance c_pab (in projection) exceeds
+//         M_pab s + 2 eta,   M_pab = max(||U_hat_p - U_hat_a||_F, ||U_hat_p - U_hat_b||_F).
+//       Why: a point of the edge moves against p by ((1 - l)(U_hat_p - U_hat_a) +
+//       l (U_hat_p - U_hat_b)) q_hat, at most M_pab s, and the rounding by 2 eta; projecting
+//       shortens. So along the path from rest to the step's start (q_hat scaled from 0, then
+//       the rounding switched on, every vertex moving linearly) and along the step, no vertex
+//       ever lies on an edge not containing it in projection, and simple_contour.hpp's lemma
+//       carries the rest polygon's simplicity to every t.
+// The radius of S is the smallest of the roots of (i) over its triangles and of (ii) over its
+// boundary's vertex-edge pairs, 0 when a hypothesis fails at rest.
+//
+// FLOATING POINT. eta bounds the rounding of SubspaceModel::position (an r-term dot product and
+// an addition per coordinate, as the certificates allow for: triangle_pair_bound.cpp), doubled.
+// The rest quantities (c_T, the distances c_pab, the Frobenius norms) are computed in floating
+// point and moved by kRadiusMargin relative to their magnitudes, far beyond their rounding, so
+// each is a bound of the exact value in the safe direction; the rest polygon's simplicity is
+// decided by simple_contour.hpp's certified test; each radius is lowered by the same margin.
+// The step's norm s is computed in floating point too (relative error near 1e-15, inside the
+// margin).
+//
+// Which sets: every node of at least kSmallestConeNode triangles whose boundary is a simple
+// cycle, with d its area-weighted mean normal at rest; and the union of every two adjacent
+// patches (the largest nodes with a radius, each holding the nodes below it), with d their
+// joint mean normal: a node pair under two such patches is culled by their union's radius.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "query/contour.hpp"
+#include "sscc/bvh/subspace_bvh.hpp"
+
+namespace sscc::detail {
+
+/// Relative margin of every rest quantity and radius (see FLOATING POINT above): far above the
+/// few roundings each carries (about 1e-15 relative), far below what matters for culling.
+/// Smaller than the rounding: radii that could cull a contact; larger: smaller radii.
+inline constexpr double kRadiusMargin = 1e-9;
+
+class PatchRadii {
+ public:
+  PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries);
+
+  /// Node n's radius: no two of its triangles sharing no vertex touch during a step whose
+  /// ends' scaled norms are below it (0 when none is proven).
+  double node_radius(int n) const { return node_radius_[n]; }
+  /// The radius of the disjoint nodes a and b together: no triangle of a touches one of b
+  /// sharing no vertex with it during a step whose ends' scaled norms are below it (0 when
+  /// none is proven; from the patches holding a and b).
+  double pair_radius(int a, int b) const;
+  /// Whether some pair of nodes under a and b may have a radius above s: false saves
+  /// pair_radius's lookup.
+  bool pair_may_exceed(int a, int b, double s) const {
+    return patch_[a] >= 0 && patch_[b] >= 0 && s < largest_pair_radius_[patch_[a]] &&
+           s < largest_pair_radius_[patch_[b]];
+  }
+
+  /// The largest radius of a node or a pair: steps at or past it have no use for the radii.
+  double largest_radius() const { return largest_radius_; }
+
+  /// Patches (nodes with a radius whose ancestors have none) and pairs of adjacent patches
+  /// with a radius, for tests and statistics.
+  int patch_count() const { return patch_count_; }
+  int patch_pair_count() const { return static_cast<int>(pair_radius_.size()); }
+
+ private:
+  std::vector<double> node_radius_;
+  std::vector<int> patch_;                                 // per node: the largest node holding it with a radius, or -1
+  std::unordered_map<std::uint64_t, double> pair_radius_;  // by the patches, smaller first
+  // Per patch: its own radius and its largest with a neighbour (what pair_radius can return)
+  std::vector<double> largest_pair_radius_;
+  int patch_count_ = 0;
+  double largest_radius_ = 0.0;
+};
+
+}  // namespace sscc::detail

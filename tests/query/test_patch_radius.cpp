@@ -1,0 +1,287 @@
+// The normal-cone radii (patch_radius.hpp) against their theorem and against brute force: below
+// a patch's radius every triangle's normal keeps its side of the patch's mean normal (also in
+// the direction that turns it fastest), the contour stays simple in projection, no two
+// triangles sharing no vertex touch over steps of that norm; and the query culling with them
+// reports what exhaustive testing does.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "brute_force.hpp"
+#include "query/contour.hpp"
+#include "query/patch_radius.hpp"
+#include "query/simple_contour.hpp"
+#include "sscc/model/polynomial_basis.hpp"
+#include "sscc/query/self_ccd.hpp"
+#include "support/parametric_meshes.hpp"
+
+namespace {
+
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+/// A model of 27 polynomial modes (weights 1, so q = q_hat) on an nu x nv grid of `surface`.
+sscc::SubspaceModel polynomial_model(int nu, int nv, bool wrap_u, bool wrap_v, const sscc::test::Surface& surface) {
+  sscc::TriangleMesh mesh(sscc::test::grid_positions(nu, nv, wrap_u, wrap_v, surface),
+                          sscc::test::grid_triangles(nu, nv, wrap_u, wrap_v));
+  const Eigen::MatrixXd basis = sscc::polynomial_basis(mesh, sscc::kMaxPolynomialModes);
+  return sscc::SubspaceModel(std::move(mesh), basis, VectorXd::Ones(sscc::kMaxPolynomialModes));
+}
+
+/// The test surfaces: a helix tube whose coils nearly touch, and a wavy sheet.
+std::vector<sscc::SubspaceModel> models() {
+  const sscc::test::Surface wavy = [](double u, double v) {
+    return Vector3d(2 * u, v, 0.15 * std::sin(6 * u) * std::cos(4 * v));
+  };
+  return {polynomial_model(60, 8, false, true, sscc::test::helix_tube(0.25)),
+          polynomial_model(24, 12, false, false, wavy)};
+}
+
+/// A vector of norm `norm` in a random direction.
+VectorXd random_of_norm(std::mt19937_64& rng, int size, double norm) {
+  std::normal_distribution<double> normal;
+  VectorXd q(size);
+  for (int k = 0; k < size; ++k) q[k] = normal(rng);
+  return norm * q / q.norm();
+}
+
+/// The patches: nodes with a radius none of whose ancestors has one.
+std::vector<int> patches(const sscc::detail::PatchRadii& radii, const sscc::detail::NodeBoundaries& boundaries,
+                         int node_count) {
+  std::vector<int> found;
+  for (int n = 0; n < node_count; ++n) {
+    bool top = radii.node_radius(n) > 0.0;
+    for (int m = boundaries.parent(n); top && m >= 0; m = boundaries.parent(m)) top = radii.node_radius(m) == 0.0;
+    if (top) found.push_back(n);
+  }
+  return found;
+}
+
+/// The triangles at positions [begin, end) of the hierarchy's order.
+std::vector<int> triangles_of(const sscc::SubspaceBvh& bvh, int n) {
+  const auto& node = bvh.nodes()[n];
+  return {bvh.triangle_order().begin() + node.triangle_begin, bvh.triangle_order().begin() + node.triangle_end};
+}
+
+/// d . n_T at positions x.
+double along(const Vector3d& d, const std::vector<Vector3d>& x, const sscc::Triangle& t) {
+  return d.dot((x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]));
+}
+
+}  // namespace
+
+TEST_CASE("patch radii: below a patch's radius its normals keep their side and its contour stays simple",
+          "[patch_radius]") {
+  std::mt19937_64 rng(17);
+  int checked_patches = 0, contour_checks = 0;
+  for (const sscc::SubspaceModel& model : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const int r = model.mode_count();
+    const auto& basis = model.scaled_basis();
+    for (int n : patches(radii, boundaries, static_cast<int>(bvh.nodes().size()))) {
+      const double radius = radii.node_radius(n);
+      REQUIRE(std::isfinite(radius));
+      const std::vector<int> triangles = triangles_of(bvh, n);
+      const std::vector<Vector3d>& rest = mesh.vertices();
+      Vector3d sum = Vector3d::Zero();
+      for (int t : triangles) {
+        const sscc::Triangle& f = mesh.triangles()[t];
+        sum += (rest[f[1]] - rest[f[0]]).cross(rest[f[2]] - rest[f[0]]);
+      }
+      const Vector3d d = sum.normalized();  // the patch's mean normal at rest (the theorem's d)
+      const double s = 0.999 * radius;
+      // Each triangle, in the direction that turns d . n fastest at rest: the gradient of
+      // d . (e1 x e2) in q, -g with e1 x (E2 q) + (E1 q) x e2 (the basis's columns).
+      for (int t : triangles) {
+        const sscc::Triangle& f = mesh.triangles()[t];
+        const Vector3d e1 = rest[f[1]] - rest[f[0]];
+        const Vector3d e2 = rest[f[2]] - rest[f[0]];
+        VectorXd g(r);
+        for (int k = 0; k < r; ++k) {
+          const auto column = [&](int v) {
+            return Vector3d(basis(3 * v, k), basis(3 * v + 1, k), basis(3 * v + 2, k));
+          };
+          const Vector3d E1 = column(f[1]) - column(f[0]), E2 = column(f[2]) - column(f[0]);
+          g[k] = d.dot(e1.cross(E2) + E1.cross(e2));
+        }
+        if (g.norm() == 0.0) continue;
+        const VectorXd worst = -s * g / g.norm();
+        REQUIRE(along(d, model.deformed_positions(worst), f) > 0.0);
+      }
+      // Random configurations of that norm: every normal on d's side, the contour simple.
+      for (int sample = 0; sample < 8; ++sample) {
+        const std::vector<Vector3d> x = model.deformed_positions(random_of_norm(rng, r, s));
+        for (int t : triangles) REQUIRE(along(d, x, mesh.triangles()[t]) > 0.0);
+        REQUIRE(sscc::detail::stays_simple_in_projection(d, boundaries.chain(n), x, x));
+        ++contour_checks;
+      }
+      ++checked_patches;
+    }
+  }
+  CHECK(checked_patches > 10);
+  CHECK(contour_checks > 80);
+}
+
+TEST_CASE("patch radii: no touching pair under brute force in steps below a patch's or a pair's radius",
+          "[patch_radius]") {
+  std::mt19937_64 rng(29);
+  int nodes_checked = 0, pairs_checked = 0;
+  for (const sscc::SubspaceModel& model : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const int r = model.mode_count();
+    const auto touching = [&](const std::vector<int>& a, const std::vector<int>& b, double s) {
+      const std::vector<Vector3d> x0 = model.deformed_positions(random_of_norm(rng, r, s));
+      const std::vector<Vector3d> x1 = model.deformed_positions(random_of_norm(rng, r, s));
+      for (int t : a) {
+        for (int u : b) {
+          if (t < u && !mesh.adjacent(t, u) &&
+              sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[t], mesh.triangles()[u]) <= 1.0) {
+            return true;
+          }
+        }
+      }
+      return false;
+    };
+    const std::vector<int> all = patches(radii, boundaries, static_cast<int>(bvh.nodes().size()));
+    for (int n : all) {
+      const std::vector<int> triangles = triangles_of(bvh, n);
+      for (int step = 0; step < 3; ++step) REQUIRE_FALSE(touching(triangles, triangles, 0.999 * radii.node_radius(n)));
+      ++nodes_checked;
+    }
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      for (std::size_t j = i + 1; j < all.size(); ++j) {
+        const double radius = radii.pair_radius(all[i], all[j]);
+        if (radius == 0.0) continue;
+        std::vector<int> both = triangles_of(bvh, all[i]);
+        const std::vector<int> other = triangles_of(bvh, all[j]);
+        both.insert(both.end(), other.begin(), other.end());
+        for (int step = 0; step < 3; ++step) REQUIRE_FALSE(touching(both, both, 0.999 * radius));
+        ++pairs_checked;
+      }
+    }
+  }
+  CHECK(nodes_checked > 10);
+  CHECK(pairs_checked > 5);
+}
+
+TEST_CASE("patch radii: the query culling with them reports what exhaustive testing does", "[patch_radius][query]") {
+  std::mt19937_64 rng(41);
+  long radius_culls = 0;
+  int colliding = 0;
+  for (const sscc::SubspaceModel& model : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::SelfCcd ccd(bvh);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    sscc::SelfCcdOptions cones;  // the cones alone: no displacement bounds
+    sscc::set_traditional(cones);
+    cones.use_normal_cones = true;
+    const int r = model.mode_count();
+    // Norms from below the typical patch radius to far past every one.
+    for (double scale : {0.5, 1.0, 4.0, 40.0, 400.0}) {
+      for (int step = 0; step < 3; ++step) {
+        const double s = scale * radii.largest_radius() / 4.0;
+        const VectorXd q0 = random_of_norm(rng, r, s), q1 = random_of_norm(rng, r, s);
+        INFO("norm " << s);
+        const sscc::SelfCcdReport culled = ccd.query(q0, q1, cones);
+        const sscc::SelfCcdReport exhaustive = ccd.query_exhaustive(q0, q1);
+        REQUIRE(culled.pairs == exhaustive.pairs);
+        REQUIRE(culled.features == exhaustive.features);
+        radius_culls += culled.stats.cone_radius_culled;
+        colliding += culled.collided();
+      }
+    }
+  }
+  CHECK(radius_culls > 20);
+  CHECK(colliding > 0);  // the large steps do collide
+}
+
+namespace {
+
+/// A one-mode model (weight 1) of a flat mesh in the plane z = 0 moved by `mode`, 3V x 1.
+struct FlatCase {
+  std::string name;
+  std::vector<Vector3d> rest;
+  std::vector<sscc::Triangle> triangles;
+  std::vector<Vector3d> mode;
+};
+
+/// A 4 x 4 vertex grid whose one interior vertex moves in x: its triangles fold over when it
+/// crosses their opposite edges, the boundary never moves (the cone's radius decides).
+FlatCase moving_interior_vertex() {
+  FlatCase c{"interior vertex",
+             sscc::test::grid_positions(3, 3, false, false, [](double u, double v) { return Vector3d(u, v, 0.0); }),
+             sscc::test::grid_triangles(3, 3, false, false),
+             {}};
+  c.mode.assign(c.rest.size(), Vector3d::Zero());
+  for (std::size_t v = 0; v < c.rest.size(); ++v) {
+    if (c.rest[v].isApprox(Vector3d(1.0 / 3, 1.0 / 3, 0.0))) c.mode[v] = Vector3d(1.0, 0.0, 0.0);
+  }
+  return c;
+}
+
+/// A flat C (an annulus sector of 300 degrees) pushed shut: the part past 180 degrees moves
+/// along the chord from the end's inner corner to the start's, more the farther along, so the
+/// ends meet while the triangles only shear (the contour's radius decides).
+FlatCase closing_c() {
+  const double sector = 300.0 * M_PI / 180;
+  const sscc::test::Surface annulus = [sector](double u, double v) {
+    const double r = 0.6 + 0.4 * v;
+    return Vector3d(r * std::cos(sector * u), r * std::sin(sector * u), 0.0);
+  };
+  FlatCase c{"closing C",
+             sscc::test::grid_positions(30, 2, false, false, annulus),
+             sscc::test::grid_triangles(30, 2, false, false),
+             {}};
+  const Vector3d chord =
+      (Vector3d(0.6, 0.0, 0.0) - 0.6 * Vector3d(std::cos(sector), std::sin(sector), 0.0)).normalized();
+  for (const Vector3d& x : c.rest) {
+    double angle = std::atan2(x.y(), x.x());
+    if (angle < -1e-12) angle += 2 * M_PI;
+    c.mode.push_back(std::clamp((angle - M_PI) / (sector - M_PI), 0.0, 1.0) * chord);
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("patch radii: on one-mode flat patches, sound below the radius and within 2.5 times of the truth",
+          "[patch_radius]") {
+  for (const FlatCase& c : {moving_interior_vertex(), closing_c()}) {
+    INFO(c.name);
+    Eigen::MatrixXd basis(3 * c.rest.size(), 1);
+    for (std::size_t v = 0; v < c.rest.size(); ++v) basis.block<3, 1>(3 * v, 0) = c.mode[v];
+    const sscc::SubspaceModel model(sscc::TriangleMesh(c.rest, c.triangles), basis, VectorXd::Ones(1));
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const double radius = radii.node_radius(0);  // the whole patch
+    REQUIRE(radius > 0.0);
+    REQUIRE(std::isfinite(radius));
+    Vector3d sum = Vector3d::Zero();
+    for (const sscc::Triangle& t : c.triangles) sum += (c.rest[t[1]] - c.rest[t[0]]).cross(c.rest[t[2]] - c.rest[t[0]]);
+    const Vector3d d = sum.normalized();  // +z or -z, as the grid's orientation has it
+    // Whether configuration q breaks a hypothesis: a normal off d's side, or the contour not
+    // simple in projection.
+    const auto breaks = [&](double q) {
+      const std::vector<Vector3d> x = model.deformed_positions(VectorXd::Constant(1, q));
+      for (const sscc::Triangle& t : c.triangles) {
+        if (!(along(d, x, t) > 0.0)) return true;
+      }
+      return !sscc::detail::stays_simple_in_projection(d, boundaries.chain(0), x, x);
+    };
+    REQUIRE_FALSE(breaks(0.0));
+    CHECK_FALSE(breaks(0.999 * radius));
+    CHECK_FALSE(breaks(-0.999 * radius));
+    CHECK((breaks(2.5 * radius) || breaks(-2.5 * radius)));
+  }
+}
