@@ -234,7 +234,16 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
     }
     it = it->second > 0.0 ? std::next(it) : pair_radius_.erase(it);
   }
-  for (double radius : largest_pair_radius_) largest_radius_ = std::max(largest_radius_, radius);
+  for (double radius : node_radius_) {
+    if (radius > 0.0) sorted_radii_.push_back(radius);
+  }
+  std::sort(sorted_radii_.begin(), sorted_radii_.end());
+}
+
+double PatchRadii::fraction_above(double s) const {
+  if (sorted_radii_.empty()) return 0.0;
+  const auto above = sorted_radii_.end() - std::upper_bound(sorted_radii_.begin(), sorted_radii_.end(), s);
+  return static_cast<double>(above) / static_cast<double>(sorted_radii_.size());
 }
 
 double PatchRadii::pair_radius(int a, int b) const {

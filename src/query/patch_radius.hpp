@@ -82,8 +82,9 @@ class PatchRadii {
            s < largest_pair_radius_[patch_[b]];
   }
 
-  /// The largest radius of a node or a pair: steps at or past it have no use for the radii.
-  double largest_radius() const { return largest_radius_; }
+  /// The fraction of the nodes with a radius whose radius exceeds s (0 when none has one):
+  /// how much of the hierarchy a step of norm s can cull.
+  double fraction_above(double s) const;
 
   /// Patches (nodes with a radius whose ancestors have none) and pairs of adjacent patches
   /// with a radius, for tests and statistics.
@@ -97,7 +98,7 @@ class PatchRadii {
   // Per patch: its own radius and its largest with a neighbour (what pair_radius can return)
   std::vector<double> largest_pair_radius_;
   int patch_count_ = 0;
-  double largest_radius_ = 0.0;
+  std::vector<double> sorted_radii_;  // the positive node radii, ascending
 };
 
 }  // namespace sscc::detail
