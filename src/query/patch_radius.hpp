@@ -73,32 +73,52 @@ class PatchRadii {
   double node_radius(int n) const { return node_radius_[n]; }
   /// The radius of the disjoint nodes a and b together: no triangle of a touches one of b
   /// sharing no vertex with it during a step whose ends' scaled norms are below it (0 when
-  /// none is proven; from the patches holding a and b).
+  /// none is proven): the larger of the union of the patches holding them and, for adjacent
+  /// nodes of similar sizes, of their own union.
   double pair_radius(int a, int b) const;
-  /// Whether some pair of nodes under a and b may have a radius above s: false saves
-  /// pair_radius's lookup.
-  bool pair_may_exceed(int a, int b, double s) const {
-    return patch_[a] >= 0 && patch_[b] >= 0 && s < largest_pair_radius_[patch_[a]] &&
-           s < largest_pair_radius_[patch_[b]];
+  /// Whether s is below pair_radius(a, b) (with `node_pairs` false: below the radius of
+  /// their patches' union), with the lookups skipped where per-node maxima already rule it
+  /// out (the traversal asks for every node pair it visits).
+  bool pair_below(int a, int b, double s, bool node_pairs) const {
+    const int patch_a = patch_[a], patch_b = patch_[b];
+    if (patch_a < 0 || patch_b < 0) return false;
+    if (s < largest_patch_pair_[patch_a] && s < largest_patch_pair_[patch_b] &&
+        s < patch_pair_radius(patch_a, patch_b)) {
+      return true;
+    }
+    return node_pairs && s < largest_node_pair_[a] && s < largest_node_pair_[b] && s < node_pair_radius(a, b);
   }
 
   /// The fraction of the nodes with a radius whose radius exceeds s (0 when none has one):
   /// how much of the hierarchy a step of norm s can cull.
   double fraction_above(double s) const;
+  /// The same for the radii of the node pairs.
+  double node_pair_fraction_above(double s) const;
 
-  /// Patches (nodes with a radius whose ancestors have none) and pairs of adjacent patches
-  /// with a radius, for tests and statistics.
+  /// Patches (nodes with a radius whose ancestors have none), pairs of adjacent patches and
+  /// pairs of adjacent nodes with a radius of their own, for tests and statistics.
   int patch_count() const { return patch_count_; }
-  int patch_pair_count() const { return static_cast<int>(pair_radius_.size()); }
+  int patch_pair_count() const { return static_cast<int>(patch_pairs_.size()); }
+  int node_pair_count() const { return static_cast<int>(node_pairs_.size()); }
 
  private:
+  using PairRadii = std::unordered_map<std::uint64_t, double>;  // by the nodes, smaller first
+  static double lookup(const PairRadii& pairs, int a, int b);
+  /// The union of the patches holding a and b (a patch's own radius when they share one).
+  double patch_pair_radius(int patch_a, int patch_b) const {
+    return patch_a == patch_b ? node_radius_[patch_a] : lookup(patch_pairs_, patch_a, patch_b);
+  }
+  double node_pair_radius(int a, int b) const { return lookup(node_pairs_, a, b); }
+
   std::vector<double> node_radius_;
-  std::vector<int> patch_;                                 // per node: the largest node holding it with a radius, or -1
-  std::unordered_map<std::uint64_t, double> pair_radius_;  // by the patches, smaller first
-  // Per patch: its own radius and its largest with a neighbour (what pair_radius can return)
-  std::vector<double> largest_pair_radius_;
+  std::vector<int> patch_;  // per node: the largest node holding it with a radius, or -1
+  PairRadii patch_pairs_;   // adjacent patches
+  PairRadii node_pairs_;    // adjacent nodes under patches, where their union beats their patches'
+  // Per patch, the largest radius patch_pair_radius can return for it; per node, the largest
+  // of its node pairs (0 for none).
+  std::vector<double> largest_patch_pair_, largest_node_pair_;
   int patch_count_ = 0;
-  std::vector<double> sorted_radii_;  // the positive node radii, ascending
+  std::vector<double> sorted_radii_, sorted_pair_radii_;  // the positive node and node pair radii, ascending
 };
 
 }  // namespace sscc::detail

@@ -81,6 +81,10 @@ constexpr double kLargestApartFractionForCones = 0.1;
 /// tests that do not pay; higher: culls lost.
 constexpr double kSmallestRadiusFractionForCones = 0.02;
 
+/// The node pairs' radii (patch_radius.hpp) are tested only when this fraction of them exceeds
+/// the step's norm: each costs a lookup in a large table.
+constexpr double kSmallestNodePairFractionForCones = 0.5;
+
 /// A step whose norm leaves more than this fraction of those radii above it forms no cones
 /// from the positions (patch_cull.hpp): the radii cull nearly all that these would, which
 /// cost every normal under the nodes they test. Measured, one thread, 5 steps, the cones
@@ -178,7 +182,10 @@ class StepContext {
     // With coordinates, the cones bounded from the norm; the fraction of their radii above
     // it says how much they cull.
     const double radius_fraction = cones && culls.radii && q_hat0.size() > 0 ? culls.radii->fraction_above(s) : 0.0;
-    if (radius_fraction >= kSmallestRadiusFractionForCones) radii_ = culls.radii;
+    if (radius_fraction >= kSmallestRadiusFractionForCones) {
+      radii_ = culls.radii;
+      node_pair_radii_ = radii_->node_pair_fraction_above(s) >= kSmallestNodePairFractionForCones;
+    }
     rest_patches_ = cones ? culls.radii : nullptr;
     if (culls.boundaries && cones && cones_pay() && radius_fraction <= kLargestRadiusFractionForFormedCones) {
       patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *culls.boundaries, shared ? shared->x0 : own_x0_,
@@ -223,7 +230,7 @@ class StepContext {
     return patch_cull_ && (!rest_patches_ || rest_patches_->node_radius(n) > 0.0) && patch_cull_->cannot_self_touch(n);
   }
   bool nodes_cannot_touch(int a, int b) {
-    if (radii_ && radii_->pair_may_exceed(a, b, s_) && s_ < radii_->pair_radius(a, b)) {
+    if (radii_ && radii_->pair_below(a, b, s_, node_pair_radii_)) {
       return ++stats_.cone_radius_culled, true;
     }
     return patch_cull_ && patch_cull_->cannot_touch(a, b);
@@ -425,6 +432,7 @@ class StepContext {
   SelfCcdStats stats_;
   const detail::PatchRadii* radii_ = nullptr;               // null: no cones bounded from the norm
   const detail::PatchRadii* rest_patches_ = nullptr;        // the nodes proven at rest (null: unknown)
+  bool node_pair_radii_ = false;                            // the radii of node pairs tested too
   std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no cones formed per step
   std::unique_ptr<detail::StepDisplacement> displacement_;  // null: no displacement cull
   const detail::FirstHitTask* cancel_ = nullptr;

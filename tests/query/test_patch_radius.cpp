@@ -173,6 +173,47 @@ TEST_CASE("patch radii: no touching pair under brute force in steps below a patc
   CHECK(pairs_checked > 5);
 }
 
+TEST_CASE("patch radii: no touching pair under brute force in steps below two adjacent nodes' radius",
+          "[patch_radius]") {
+  std::mt19937_64 rng(31);
+  int pairs_checked = 0;
+  for (const sscc::SubspaceModel& model : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    REQUIRE(radii.node_pair_count() > 0);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const auto& nodes = bvh.nodes();
+    const int count = static_cast<int>(nodes.size());
+    // Disjoint node pairs with a radius (their patches' union's or their own), every 20th.
+    int seen = 0;
+    for (int a = 0; a < count; ++a) {
+      for (int b = a + 1; b < count; ++b) {
+        const bool disjoint =
+            nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+        const double radius = disjoint ? radii.pair_radius(a, b) : 0.0;
+        if (radius == 0.0 || seen++ % 20 != 0) continue;
+        const std::vector<int> other = triangles_of(bvh, b);
+        for (int step = 0; step < 2; ++step) {
+          const std::vector<Vector3d> x0 =
+              model.deformed_positions(random_of_norm(rng, model.mode_count(), 0.999 * radius));
+          const std::vector<Vector3d> x1 =
+              model.deformed_positions(random_of_norm(rng, model.mode_count(), 0.999 * radius));
+          for (int t : triangles_of(bvh, a)) {
+            for (int u : other) {
+              if (mesh.adjacent(t, u)) continue;
+              REQUIRE(sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[t], mesh.triangles()[u]) >
+                      1.0);
+            }
+          }
+        }
+        ++pairs_checked;
+      }
+    }
+  }
+  CHECK(pairs_checked > 50);
+}
+
 TEST_CASE("patch radii: the query culling with them reports what exhaustive testing does", "[patch_radius][query]") {
   std::mt19937_64 rng(41);
   long radius_culls = 0;
