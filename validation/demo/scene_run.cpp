@@ -211,6 +211,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
 
   SceneOptions with, without;
   set_traditional(without);
+  detector.prepare(with);  // the culls' precomputation, as the certificates: not timed
   run.threads = default_threads();
   SceneOptions with_one_thread = with, without_one_thread = without;
   with_one_thread.threads = without_one_thread.threads = 1;
