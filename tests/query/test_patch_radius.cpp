@@ -40,6 +40,14 @@ std::vector<sscc::SubspaceModel> models() {
           polynomial_model(24, 12, false, false, wavy)};
 }
 
+/// A model's hierarchy, boundary chains and radii.
+struct Built {
+  explicit Built(const sscc::SubspaceModel& model) : bvh(model), boundaries(bvh), radii(bvh, boundaries) {}
+  sscc::SubspaceBvh bvh;
+  sscc::detail::NodeBoundaries boundaries;
+  sscc::detail::PatchRadii radii;
+};
+
 /// A vector of norm `norm` in a random direction.
 VectorXd random_of_norm(std::mt19937_64& rng, int size, double norm) {
   std::normal_distribution<double> normal;
@@ -78,9 +86,8 @@ TEST_CASE("patch radii: below a patch's radius its normals keep their side and i
   std::mt19937_64 rng(17);
   int checked_patches = 0, contour_checks = 0;
   for (const sscc::SubspaceModel& model : models()) {
-    const sscc::SubspaceBvh bvh(model);
-    const sscc::detail::NodeBoundaries boundaries(bvh);
-    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const Built built(model);
+    const auto& [bvh, boundaries, radii] = built;
     const sscc::TriangleMesh& mesh = model.mesh();
     const int r = model.mode_count();
     const auto& basis = model.scaled_basis();
@@ -133,9 +140,8 @@ TEST_CASE("patch radii: no touching pair under brute force in steps below a patc
   std::mt19937_64 rng(29);
   int nodes_checked = 0, pairs_checked = 0;
   for (const sscc::SubspaceModel& model : models()) {
-    const sscc::SubspaceBvh bvh(model);
-    const sscc::detail::NodeBoundaries boundaries(bvh);
-    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const Built built(model);
+    const auto& [bvh, boundaries, radii] = built;
     const sscc::TriangleMesh& mesh = model.mesh();
     const int r = model.mode_count();
     const auto touching = [&](const std::vector<int>& a, const std::vector<int>& b, double s) {
@@ -178,9 +184,8 @@ TEST_CASE("patch radii: no touching pair under brute force in steps below two ad
   std::mt19937_64 rng(31);
   int pairs_checked = 0;
   for (const sscc::SubspaceModel& model : models()) {
-    const sscc::SubspaceBvh bvh(model);
-    const sscc::detail::NodeBoundaries boundaries(bvh);
-    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const Built built(model);
+    const auto& [bvh, boundaries, radii] = built;
     REQUIRE(radii.node_pair_count() > 0);
     const sscc::TriangleMesh& mesh = model.mesh();
     const auto& nodes = bvh.nodes();
@@ -304,9 +309,8 @@ TEST_CASE("patch radii: on one-mode flat patches, sound below the radius and wit
     Eigen::MatrixXd basis(3 * c.rest.size(), 1);
     for (std::size_t v = 0; v < c.rest.size(); ++v) basis.block<3, 1>(3 * v, 0) = c.mode[v];
     const sscc::SubspaceModel model(sscc::TriangleMesh(c.rest, c.triangles), basis, VectorXd::Ones(1));
-    const sscc::SubspaceBvh bvh(model);
-    const sscc::detail::NodeBoundaries boundaries(bvh);
-    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const Built built(model);
+    const auto& [bvh, boundaries, radii] = built;
     const double radius = radii.node_radius(0);  // the whole patch
     REQUIRE(radius > 0.0);
     REQUIRE(std::isfinite(radius));

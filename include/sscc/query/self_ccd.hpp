@@ -105,12 +105,14 @@ struct SelfCcdOptions {
   /// cone and whose contour stays one simple polygon in projection over the step: proven free
   /// of self-contact (src/query/patch_cull.hpp states the theorem). Exact, like every cull
   /// here. Not applied with a minimum separation (it proves no contact, not a distance) nor to
-  /// query_discrete. Used on meshes whose patches proven at rest average 16 triangles or more
-  /// (src/query/patch_cull.hpp, kSmallestMeanRestPatch), and there on the steps that the
-  /// certificates, or without them the displacement bounds, leave mostly to the traversal
-  /// (src/query/self_ccd.cpp); with certificates, on the nodes they do not cull. On the
-  /// benchmark meshes where they are used, the plain traversal with cones ran at 1.01x to 1.60x its
-  /// speed without (README, the self-CCD table).
+  /// query_discrete. Two forms: query() bounds the cones from the step's norm, O(1) per node,
+  /// with radii built once per hierarchy for the patches proven at rest and their unions
+  /// (src/query/patch_radius.hpp; prepare() builds them: 0.35 s on a 15k-triangle mesh);
+  /// where those cull little, and in query_positions, the cones are formed from the positions,
+  /// on meshes whose patches proven at rest average 16 triangles or more (patch_cull.hpp,
+  /// kSmallestMeanRestPatch), on the steps the certificates or the displacement bounds leave
+  /// mostly to the traversal (src/query/self_ccd.cpp). With certificates, on the nodes they do
+  /// not cull. The README's self-CCD table gives the speed against the plain traversal.
   bool use_normal_cones = true;
   /// Skip nodes, and pairs of nodes, whose triangles the step's deformation moves too little,
   /// relative to one another, to close the gaps they have at rest: bounded mode by mode from
