@@ -130,6 +130,21 @@ void bind_queries(py::module_& m) {
            kKernelDoc + "Raises ValueError for q of the wrong size or not finite.")
               .c_str())
       .def(
+          "prepare",
+          [](const SelfCcd& detector, bool use_certificates, bool use_normal_cones, bool use_displacement_bounds) {
+            SelfCcdOptions options;
+            options.use_certificates = use_certificates;
+            options.use_normal_cones = use_normal_cones;
+            options.use_displacement_bounds = use_displacement_bounds;
+            py::gil_scoped_release release;
+            detector.prepare(options);
+          },
+          py::kw_only(), py::arg("use_certificates") = true, py::arg("use_normal_cones") = true,
+          py::arg("use_displacement_bounds") = true,
+          "Builds what queries with these culls precompute on their first use (the normal cones' radii and "
+          "boundary chains, the displacement bounds' rest data: under a second on a 15k-triangle mesh), so "
+          "that no query pays for it. Optional.")
+      .def(
           "query_positions",
           [](const SelfCcd& detector, py::object x0, py::object x1, const std::string& mode, bool use_normal_cones,
              double toi_tolerance, double minimum_separation) {

@@ -29,6 +29,7 @@ def test_normal_cones_on_and_off(sphere_bvh):
     # The cones (on by default) cull patches of the sphere; switched off they cull nothing.
     # Both report what the exhaustive reference does, on q and on explicit positions.
     detector = sscc.SelfCcd(sphere_bvh)
+    detector.prepare()  # the cones' radii built before the queries
     model = sphere_bvh.model
     rng = np.random.default_rng(8)
     culled = 0
