@@ -27,7 +27,7 @@ class RadiusBounds {
     double largest_coordinate = 0.0, largest_block = 0.0;
     for (int v = 0; v < mesh_.vertex_count(); ++v) {
       largest_coordinate = std::max(largest_coordinate, rest_[v].cwiseAbs().maxCoeff());
-      largest_block = std::max(largest_block, block(v).norm());
+      largest_block = std::max(largest_block, block(v).stableNorm());
     }
     // Per coordinate, position() rounds an r-term dot product and one addition: within
     // (r + 2) u of |p| + ||U_hat_v|| ||q_hat||; sqrt(3) for the vector; doubled for room.
@@ -64,14 +64,16 @@ class RadiusBounds {
     const Vector3d w2 = d.cross(e1), w1 = e2.cross(d);
     const Eigen::VectorXd g =
         (block(f[2]) - block(f[0])).transpose() * w2 + (block(f[1]) - block(f[0])).transpose() * w1;
-    const double g_norm = g.norm() * kUp + kRadiusMargin * (w2.norm() * m2 + w1.norm() * m1);
+    const double g_norm =
+        g.stableNorm() * kUp + kRadiusMargin * (w2.norm() * m2 + w1.norm() * m1) + kUnderflowAllowance;
     const double constant = (2.0 * eta0_ * l0_sum + 4.0 * eta0_ * eta0_) * kUp;
     const double linear = (g_norm + 2.0 * eta0_ * m_sum + 2.0 * eta1_ * l0_sum + 8.0 * eta0_ * eta1_) * kUp;
     const double smallest_product = std::min({m1 * m2, m1 * m3, m2 * m3});
     const double quadratic = (smallest_product + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp;
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
     if (!(slack > 0.0)) return 0.0;
-    return kDown * 2.0 * slack / (linear + std::sqrt(linear * linear + 4.0 * quadratic * slack));
+    const double denominator = linear + std::sqrt(linear * linear + 4.0 * quadratic * slack);
+    return denominator > 0.0 ? kDown * 2.0 * slack / denominator : std::numeric_limits<double>::infinity();
   }
 
   /// The radius of hypothesis (ii) for a boundary cycle seen along d (0 when its projection
@@ -89,7 +91,7 @@ class RadiusBounds {
     mean /= static_cast<double>(chain.size());
     const auto distance_from_mean = [&](int v) {
       const Eigen::Matrix<double, 3, Eigen::Dynamic> difference = block(v) - mean;
-      return difference.norm() * kUp;  // bounds the projected rate too
+      return difference.stableNorm() * kUp;  // bounds the projected rate too
     };
     std::vector<double> start_from_mean(chain.size()), end_from_mean(chain.size());
     for (std::size_t i = 0; i < chain.size(); ++i) {
@@ -109,8 +111,9 @@ class RadiusBounds {
             rest_[p].cwiseAbs().maxCoeff() + rest_[a].cwiseAbs().maxCoeff() + rest_[b].cwiseAbs().maxCoeff();
         const double gap = point_segment_distance(pp, pa, pb) - kRadiusMargin * magnitude - 2.0 * eta0_ * kUp;
         if (!(gap > 0.0)) return 0.0;
-        const double bound = (start_from_mean[j] + std::max(start_from_mean[i], end_from_mean[i]) + 2.0 * eta1_) * kUp;
-        if (kDown * gap / bound >= radius) continue;
+        const double bound = (start_from_mean[j] + std::max(start_from_mean[i], end_from_mean[i]) + 2.0 * eta1_) * kUp +
+                             kUnderflowAllowance;
+        if (kDown * gap >= radius * bound) continue;
         const double rate =
             (std::max(projected_difference_norm(d, p, a), projected_difference_norm(d, p, b)) + 2.0 * eta1_) * kUp;
         radius = std::min(radius, kDown * gap / rate);
@@ -125,13 +128,13 @@ class RadiusBounds {
     return {bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_, 3, r_};
   }
   /// ||U_hat_a - U_hat_b||_F, rounded up.
-  double difference_norm(int a, int b) const { return (block(a) - block(b)).norm() * kUp; }
+  double difference_norm(int a, int b) const { return (block(a) - block(b)).stableNorm() * kUp; }
   /// ||(I - d d^T)(U_hat_a - U_hat_b)||_F for the unit d, rounded up: how fast the two
   /// vertices part in projection along d.
   double projected_difference_norm(const Vector3d& d, int a, int b) const {
     const Eigen::Matrix<double, 3, Eigen::Dynamic> difference = block(a) - block(b);
     const Eigen::Matrix<double, 3, Eigen::Dynamic> across = difference - d * (d.transpose() * difference);
-    return across.norm() * kUp + kRadiusMargin * difference.norm();
+    return across.stableNorm() * kUp + kRadiusMargin * difference.stableNorm() + kUnderflowAllowance;
   }
 
   static double point_segment_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b) {

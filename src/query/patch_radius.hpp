@@ -39,6 +39,11 @@
 // point and moved by kRadiusMargin relative to their magnitudes, far beyond their rounding, so
 // each is a bound of the exact value in the safe direction; the rest polygon's simplicity is
 // decided by simple_contour.hpp's certified test; each radius is lowered by the same margin.
+// The rates' norms are scaled ones (stableNorm): plain norms square the entries, which
+// underflow to 0 for bases of entries near 1e-160 and below, moved by coordinates near 1e160,
+// and would leave the radii unbounded; products in the subnormal range, which err absolutely,
+// are covered by kUnderflowAllowance (normal_cone.hpp). A mode-free set (every rate 0) gets an
+// infinite radius without dividing by zero.
 // The step's norm s is computed in floating point too (relative error near 1e-15, inside the
 // margin).
 //

@@ -379,3 +379,30 @@ TEST_CASE("patch radii: every patch's and every adjacent pair's radius is the th
   CHECK(nodes_checked > 20);
   CHECK(pairs_checked > 5);
 }
+
+TEST_CASE("patch radii: a basis whose squares underflow scales the radii back, and a still basis divides by nothing",
+          "[patch_radius]") {
+  // The wavy sheet's modes times 1e-170: every square of a basis entry underflows to 0, so
+  // plain norms of the rates would be 0 and every radius infinite, while coordinates of norm
+  // 1e170 move the mesh as the original's of norm 1 do.
+  constexpr double kTiny = 1e-170;
+  const sscc::SubspaceModel original = models()[1];
+  const Eigen::MatrixXd basis = original.scaled_basis();
+  const sscc::SubspaceModel tiny(original.mesh(), basis * kTiny, VectorXd::Ones(original.mode_count()));
+  const sscc::SubspaceBvh original_bvh(original), tiny_bvh(tiny);
+  const sscc::detail::NodeBoundaries boundaries(original_bvh), tiny_boundaries(tiny_bvh);
+  const sscc::detail::PatchRadii radii(original_bvh, boundaries), tiny_radii(tiny_bvh, tiny_boundaries);
+  // The root holds the whole sheet in both hierarchies (their clusterings differ).
+  REQUIRE(radii.node_radius(0) > 0.0);
+  CHECK(tiny_radii.node_radius(0) * kTiny <= radii.node_radius(0) * (1.0 + kTheoremExcess));
+  CHECK(tiny_radii.node_radius(0) * kTiny >= radii.node_radius(0) * (1.0 - kTheoremShortfall));
+
+  // No mode moves anything: no rate, no rounding, the radii as large as they come, and no
+  // division by zero on the way (the test runner traps it).
+  const sscc::SubspaceModel still(original.mesh(), Eigen::MatrixXd::Zero(basis.rows(), basis.cols()),
+                                  VectorXd::Ones(original.mode_count()));
+  const sscc::SubspaceBvh still_bvh(still);
+  const sscc::detail::NodeBoundaries still_boundaries(still_bvh);
+  const sscc::detail::PatchRadii still_radii(still_bvh, still_boundaries);
+  CHECK(still_radii.node_radius(0) > 1e100);
+}
