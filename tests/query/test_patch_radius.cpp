@@ -316,7 +316,7 @@ double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& 
     const double a = (E2.transpose() * d.cross(e1) + E1.transpose() * e2.cross(d)).norm();
     const double n1 = E1.norm(), n2 = E2.norm(), n3 = E3.norm();
     const double b = std::min({n1 * n2, n1 * n3, n2 * n3});
-    radius = std::min(radius, b > 0.0 ? (-a + std::sqrt(a * a + 4.0 * b * c)) / (2.0 * b) : c / a);
+    radius = std::min(radius, 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c)));  // no cancellation
   }
   const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - d * d.transpose();
   for (const auto& edge : chain) {
