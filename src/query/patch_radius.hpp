@@ -23,13 +23,14 @@
 //  (ii) the projection along d of the boundary stays one simple closed polygon for every t of
 //       the step when it is one at rest and, for every boundary vertex p and boundary edge
 //       (a, b) not containing p, at rest distance c_pab (in projection) exceeds
-//         M_pab s + 2 eta,   M_pab = max(||U_hat_p - U_hat_a||_F, ||U_hat_p - U_hat_b||_F).
-//       Why: a point of the edge moves against p by ((1 - l)(U_hat_p - U_hat_a) +
-//       l (U_hat_p - U_hat_b)) q_hat, at most M_pab s, and the rounding by 2 eta; projecting
-//       shortens. So along the path from rest to the step's start (q_hat scaled from 0, then
-//       the rounding switched on, every vertex moving linearly) and along the step, no vertex
-//       ever lies on an edge not containing it in projection, and simple_contour.hpp's lemma
-//       carries the rest polygon's simplicity to every t.
+//         M_pab s + 2 eta,   M_pab = max(||P (U_hat_p - U_hat_a)||_F, ||P (U_hat_p - U_hat_b)||_F),
+//       P = I - d d^T the projection.
+//       Why: a point of the edge moves against p, in projection, by P ((1 - l)(U_hat_p -
+//       U_hat_a) + l (U_hat_p - U_hat_b)) q_hat, at most M_pab s, and the rounding by 2 eta
+//       (projecting shortens it). So along the path from rest to the step's start (q_hat
+//       scaled from 0, then the rounding switched on, every vertex moving linearly) and along
+//       the step, no vertex ever lies on an edge not containing it in projection, and
+//       simple_contour.hpp's lemma carries the rest polygon's simplicity to every t.
 // The radius of S is the smallest of the roots of (i) over its triangles and of (ii) over its
 // boundary's vertex-edge pairs, 0 when a hypothesis fails at rest.
 //
