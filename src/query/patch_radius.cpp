@@ -54,7 +54,7 @@ class RadiusBounds {
     const Vector3d e2 = rest_[f[2]] - rest_[f[0]];
     const double l1 = e1.norm() * kUp, l2 = e2.norm() * kUp;
     // Edges (v0 v1) and (v2 v0) of the triangle: E1 and E2 (up to sign); E3 = E2 - E1 along
-    // (v1 v2). (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E3 q) x (E2 q): the two smallest bound it.
+    // (v1 v2). (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E2 q) x (E3 q): the two smallest bound it.
     const double m1 = edge_norms_[mesh_.triangle_edges(t)[0]];
     const double m2 = edge_norms_[mesh_.triangle_edges(t)[2]];
     const double m3 = edge_norms_[mesh_.triangle_edges(t)[1]];

@@ -16,7 +16,7 @@
 //       smallest of ||E1||_F, ||E2||_F, ||E3||_F (E3 = E2 - E1), L0 = |e1| + |e2|,
 //       L1 = ||E1||_F + ||E2||_F.
 //       Why: d . n(q_hat) = c_T + q_hat . (E2^T (d x e1) + E1^T (e2 x d)) + d . ((E1 q_hat) x
-//       (E2 q_hat)), and (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E3 q) x (E2 q), each bounded by
+//       (E2 q_hat)), and (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E2 q) x (E3 q), each bounded by
 //       Cauchy-Schwarz; a computed edge is off by at most 2 eta, which moves the cross product
 //       by at most 2 eta (|e1(q_hat)| + |e2(q_hat)|) + 4 eta^2.
 //       The condition is a quadratic in s: below its positive root it holds.
