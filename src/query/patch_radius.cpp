@@ -29,7 +29,7 @@ class RadiusBounds {
     double largest_coordinate = 0.0, largest_block = 0.0;
     for (int v = 0; v < mesh_.vertex_count(); ++v) {
       largest_coordinate = std::max(largest_coordinate, rest_[v].cwiseAbs().maxCoeff());
-      largest_block = std::max(largest_block, block(v).norm());
+      largest_block = std::max(largest_block, block(v).stableNorm());
     }
     // Per coordinate, position() rounds an r-term dot product and one addition: within
     // (r + 2) u of |p| + ||U_hat_v|| ||q_hat||; sqrt(3) for the vector; doubled for room.
@@ -56,7 +56,7 @@ class RadiusBounds {
     const Vector3d e2 = rest_[f[2]] - rest_[f[0]];
     const double l1 = e1.norm() * kUp, l2 = e2.norm() * kUp;
     // Edges (v0 v1) and (v2 v0) of the triangle: E1 and E2 (up to sign); E3 = E2 - E1 along
-    // (v1 v2). (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E3 q) x (E2 q): the two smallest bound it.
+    // (v1 v2). (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E2 q) x (E3 q): the two smallest bound it.
     const double m1 = edge_norms_[mesh_.triangle_edges(t)[0]];
     const double m2 = edge_norms_[mesh_.triangle_edges(t)[2]];
     const double m3 = edge_norms_[mesh_.triangle_edges(t)[1]];
@@ -65,22 +65,23 @@ class RadiusBounds {
     // |g| s, computed with a margin for its rounding.
     const Vector3d w2 = d.cross(e1), w1 = e2.cross(d);
     const double *rows0 = row_data(f[0]), *rows1 = row_data(f[1]), *rows2 = row_data(f[2]);
-    double g_squared = 0.0;
-    for (int k = 0; k < r_; ++k) {
-      double g = 0.0;
-      for (int i = 0; i < 3; ++i) {
-        g += (rows2[i * r_ + k] - rows0[i * r_ + k]) * w2[i] + (rows1[i * r_ + k] - rows0[i * r_ + k]) * w1[i];
-      }
-      g_squared += g * g;
-    }
-    const double g_norm = std::sqrt(g_squared) * kUp + kRadiusMargin * (w2.norm() * m2 + w1.norm() * m1);
+    const double g_norm =
+        scaled_norm([&](int k) {
+          double g = 0.0;
+          for (int i = 0; i < 3; ++i) {
+            g += (rows2[i * r_ + k] - rows0[i * r_ + k]) * w2[i] + (rows1[i * r_ + k] - rows0[i * r_ + k]) * w1[i];
+          }
+          return g;
+        }) * kUp +
+        kRadiusMargin * (w2.norm() * m2 + w1.norm() * m1) + kUnderflowAllowance;
     const double constant = (2.0 * eta0_ * l0_sum + 4.0 * eta0_ * eta0_) * kUp;
     const double linear = (g_norm + 2.0 * eta0_ * m_sum + 2.0 * eta1_ * l0_sum + 8.0 * eta0_ * eta1_) * kUp;
     const double smallest_product = std::min({m1 * m2, m1 * m3, m2 * m3});
     const double quadratic = (smallest_product + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp;
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
     if (!(slack > 0.0)) return 0.0;
-    return kDown * 2.0 * slack / (linear + std::sqrt(linear * linear + 4.0 * quadratic * slack));
+    const double denominator = linear + std::sqrt(linear * linear + 4.0 * quadratic * slack);
+    return denominator > 0.0 ? kDown * 2.0 * slack / denominator : std::numeric_limits<double>::infinity();
   }
 
   /// The radius of hypothesis (ii) for a boundary cycle seen along d (0 when its projection
@@ -100,7 +101,7 @@ class RadiusBounds {
     };
     const auto end_of = [&](int v) {
       const Eigen::Matrix<double, 3, Eigen::Dynamic> difference = block(v) - mean;
-      return End{rest_[v] - rest_[v].dot(d) * d, rest_[v].cwiseAbs().maxCoeff(), difference.norm() * kUp};
+      return End{rest_[v] - rest_[v].dot(d) * d, rest_[v].cwiseAbs().maxCoeff(), difference.stableNorm() * kUp};
     };
     std::vector<End> starts(k), ends(k);
     double largest_rate = 0.0, largest_magnitude = 0.0;
@@ -117,13 +118,14 @@ class RadiusBounds {
     std::vector<std::pair<double, int>> along_u(k);
     for (int j = 0; j < k; ++j) along_u[j] = {starts[j].projected.dot(u), j};
     std::sort(along_u.begin(), along_u.end());
-    const double pair_rate_bound = (2.0 * largest_rate + 2.0 * eta1_) * kUp;
+    const double pair_rate_bound = (2.0 * largest_rate + 2.0 * eta1_) * kUp + kUnderflowAllowance;
     const double margins = 4.0 * kRadiusMargin * largest_magnitude + 2.0 * eta0_ * kUp;
     double radius = std::numeric_limits<double>::infinity();
     for (int i = 0; i < k; ++i) {
       const int a = chain[i][0], b = chain[i][1];
       const double reach = radius * pair_rate_bound + margins;
-      const auto [lo, hi] = std::minmax(starts[i].projected.dot(u), ends[i].projected.dot(u));
+      const double u_start = starts[i].projected.dot(u), u_end = ends[i].projected.dot(u);
+      const double lo = std::min(u_start, u_end), hi = std::max(u_start, u_end);
       auto j_it = std::lower_bound(along_u.begin(), along_u.end(), std::make_pair(lo - reach, -1));
       for (; j_it != along_u.end() && j_it->first <= hi + reach; ++j_it) {
         const int j = j_it->second, p = chain[j][0];
@@ -133,8 +135,9 @@ class RadiusBounds {
                            kRadiusMargin * magnitude - 2.0 * eta0_ * kUp;
         if (!(gap > 0.0)) return 0.0;
         const double bound =
-            (starts[j].from_mean + std::max(starts[i].from_mean, ends[i].from_mean) + 2.0 * eta1_) * kUp;
-        if (kDown * gap / bound >= radius) continue;
+            (starts[j].from_mean + std::max(starts[i].from_mean, ends[i].from_mean) + 2.0 * eta1_) * kUp +
+            kUnderflowAllowance;
+        if (kDown * gap >= radius * bound) continue;
         const double rate =
             (std::max(projected_difference_norm(d, p, a), projected_difference_norm(d, p, b)) + 2.0 * eta1_) * kUp;
         radius = std::min(radius, kDown * gap / rate);
@@ -145,6 +148,20 @@ class RadiusBounds {
 
  private:
   /// Vertex v's scaled mode block (3 x r).
+  /// The 2-norm of value(0), ..., value(r - 1), scaled by the largest as Eigen's stableNorm
+  /// is: squares of tiny entries would underflow to 0.
+  template <typename Value>
+  double scaled_norm(Value value) const {
+    double largest = 0.0;
+    for (int k = 0; k < r_; ++k) largest = std::max(largest, std::abs(value(k)));
+    if (!(largest > 0.0) || !std::isfinite(largest)) return largest;
+    double sum = 0.0;
+    for (int k = 0; k < r_; ++k) {
+      const double scaled = value(k) / largest;
+      sum += scaled * scaled;
+    }
+    return largest * std::sqrt(sum);
+  }
   const double* row_data(int v) const {
     return bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_;
   }
@@ -152,21 +169,36 @@ class RadiusBounds {
     return {bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_, 3, r_};
   }
   /// ||U_hat_a - U_hat_b||_F, rounded up.
-  double difference_norm(int a, int b) const { return (block(a) - block(b)).norm() * kUp; }
+  double difference_norm(int a, int b) const { return (block(a) - block(b)).stableNorm() * kUp; }
   /// ||(I - d d^T)(U_hat_a - U_hat_b)||_F for the unit d, rounded up: how fast the two
   /// vertices part in projection along d.
   double projected_difference_norm(const Vector3d& d, int a, int b) const {
-    // Column by column, without temporaries (the contour loops call this for most pairs).
+    // Column by column, without temporaries (the contour loops call this for most pairs), in
+    // two passes: the largest entries, then the squares scaled by them (as stableNorm).
     const double* rows_a = row_data(a);
     const double* rows_b = row_data(b);
-    double across = 0.0, whole = 0.0;
-    for (int k = 0; k < r_; ++k) {
-      const Vector3d difference(rows_a[k] - rows_b[k], rows_a[r_ + k] - rows_b[r_ + k],
-                                rows_a[2 * r_ + k] - rows_b[2 * r_ + k]);
-      across += (difference - d.dot(difference) * d).squaredNorm();
-      whole += difference.squaredNorm();
-    }
-    return std::sqrt(across) * kUp + kRadiusMargin * std::sqrt(whole);
+    const auto columns = [&](auto visit) {
+      for (int k = 0; k < r_; ++k) {
+        const Vector3d whole(rows_a[k] - rows_b[k], rows_a[r_ + k] - rows_b[r_ + k],
+                             rows_a[2 * r_ + k] - rows_b[2 * r_ + k]);
+        visit(whole - d.dot(whole) * d, whole);
+      }
+    };
+    double largest_across = 0.0, largest_whole = 0.0;
+    columns([&](const Vector3d& across, const Vector3d& whole) {
+      largest_across = std::max(largest_across, across.cwiseAbs().maxCoeff());
+      largest_whole = std::max(largest_whole, whole.cwiseAbs().maxCoeff());
+    });
+    if (!(largest_whole > 0.0)) return kUnderflowAllowance;
+    if (!std::isfinite(largest_whole)) return largest_whole;
+    double across_sum = 0.0, whole_sum = 0.0;
+    const double across_scale = largest_across > 0.0 ? largest_across : 1.0;
+    columns([&](const Vector3d& across, const Vector3d& whole) {
+      across_sum += (across / across_scale).squaredNorm();
+      whole_sum += (whole / largest_whole).squaredNorm();
+    });
+    return largest_across * std::sqrt(across_sum) * kUp + kRadiusMargin * largest_whole * std::sqrt(whole_sum) +
+           kUnderflowAllowance;
   }
 
   static double point_segment_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b) {

@@ -16,20 +16,21 @@
 //       smallest of ||E1||_F, ||E2||_F, ||E3||_F (E3 = E2 - E1), L0 = |e1| + |e2|,
 //       L1 = ||E1||_F + ||E2||_F.
 //       Why: d . n(q_hat) = c_T + q_hat . (E2^T (d x e1) + E1^T (e2 x d)) + d . ((E1 q_hat) x
-//       (E2 q_hat)), and (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E3 q) x (E2 q), each bounded by
+//       (E2 q_hat)), and (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E2 q) x (E3 q), each bounded by
 //       Cauchy-Schwarz; a computed edge is off by at most 2 eta, which moves the cross product
 //       by at most 2 eta (|e1(q_hat)| + |e2(q_hat)|) + 4 eta^2.
 //       The condition is a quadratic in s: below its positive root it holds.
 //  (ii) the projection along d of the boundary stays one simple closed polygon for every t of
 //       the step when it is one at rest and, for every boundary vertex p and boundary edge
 //       (a, b) not containing p, at rest distance c_pab (in projection) exceeds
-//         M_pab s + 2 eta,   M_pab = max(||U_hat_p - U_hat_a||_F, ||U_hat_p - U_hat_b||_F).
-//       Why: a point of the edge moves against p by ((1 - l)(U_hat_p - U_hat_a) +
-//       l (U_hat_p - U_hat_b)) q_hat, at most M_pab s, and the rounding by 2 eta; projecting
-//       shortens. So along the path from rest to the step's start (q_hat scaled from 0, then
-//       the rounding switched on, every vertex moving linearly) and along the step, no vertex
-//       ever lies on an edge not containing it in projection, and simple_contour.hpp's lemma
-//       carries the rest polygon's simplicity to every t.
+//         M_pab s + 2 eta,   M_pab = max(||P (U_hat_p - U_hat_a)||_F, ||P (U_hat_p - U_hat_b)||_F),
+//       P = I - d d^T the projection.
+//       Why: a point of the edge moves against p, in projection, by P ((1 - l)(U_hat_p -
+//       U_hat_a) + l (U_hat_p - U_hat_b)) q_hat, at most M_pab s, and the rounding by 2 eta
+//       (projecting shortens it). So along the path from rest to the step's start (q_hat
+//       scaled from 0, then the rounding switched on, every vertex moving linearly) and along
+//       the step, no vertex ever lies on an edge not containing it in projection, and
+//       simple_contour.hpp's lemma carries the rest polygon's simplicity to every t.
 // The radius of S is the smallest of the roots of (i) over its triangles and of (ii) over its
 // boundary's vertex-edge pairs, 0 when a hypothesis fails at rest.
 //
@@ -39,6 +40,11 @@
 // point and moved by kRadiusMargin relative to their magnitudes, far beyond their rounding, so
 // each is a bound of the exact value in the safe direction; the rest polygon's simplicity is
 // decided by simple_contour.hpp's certified test; each radius is lowered by the same margin.
+// The rates' norms are scaled ones (stableNorm): plain norms square the entries, which
+// underflow to 0 for bases of entries near 1e-160 and below, moved by coordinates near 1e160,
+// and would leave the radii unbounded; products in the subnormal range, which err absolutely,
+// are covered by kUnderflowAllowance (normal_cone.hpp). A mode-free set (every rate 0) gets an
+// infinite radius without dividing by zero.
 // The step's norm s is computed in floating point too (relative error near 1e-15, inside the
 // margin).
 //

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -331,4 +332,124 @@ TEST_CASE("patch radii: on one-mode flat patches, sound below the radius and wit
     CHECK_FALSE(breaks(-0.999 * radius));
     CHECK((breaks(2.5 * radius) || breaks(-2.5 * radius)));
   }
+}
+
+namespace {
+
+/// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
+/// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
+/// of c_T = A_T s + B_T s^2 over the triangles and of c_pab = M_pab s over the boundary's
+/// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
+/// in projection at rest or a triangle faces away.
+double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
+                      const std::vector<sscc::detail::DirectedEdge>& chain) {
+  const std::vector<Vector3d>& rest = model.mesh().vertices();
+  const auto block = [&](int v) -> Eigen::MatrixXd { return model.scaled_basis().middleRows(3 * v, 3); };
+  Vector3d sum = Vector3d::Zero();
+  for (int t : triangles) {
+    const sscc::Triangle& f = model.mesh().triangles()[t];
+    sum += (rest[f[1]] - rest[f[0]]).cross(rest[f[2]] - rest[f[0]]);
+  }
+  const Vector3d d = sum.normalized();
+  if (!sscc::detail::stays_simple_in_projection(d, chain, rest, rest)) return 0.0;
+  double radius = std::numeric_limits<double>::infinity();
+  for (int t : triangles) {
+    const sscc::Triangle& f = model.mesh().triangles()[t];
+    const Vector3d e1 = rest[f[1]] - rest[f[0]], e2 = rest[f[2]] - rest[f[0]];
+    const Eigen::MatrixXd E1 = block(f[1]) - block(f[0]), E2 = block(f[2]) - block(f[0]);
+    const Eigen::MatrixXd E3 = block(f[2]) - block(f[1]);
+    const double c = d.dot(e1.cross(e2));
+    if (!(c > 0.0)) return 0.0;
+    const double a = (E2.transpose() * d.cross(e1) + E1.transpose() * e2.cross(d)).norm();
+    const double n1 = E1.norm(), n2 = E2.norm(), n3 = E3.norm();
+    const double b = std::min({n1 * n2, n1 * n3, n2 * n3});
+    radius = std::min(radius, 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c)));  // no cancellation
+  }
+  const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - d * d.transpose();
+  for (const auto& edge : chain) {
+    const Vector3d pa = across * rest[edge[0]], pb = across * rest[edge[1]];
+    for (const auto& other : chain) {
+      const int p = other[0];
+      if (p == edge[0] || p == edge[1]) continue;
+      const Vector3d pp = across * rest[p];
+      const double l = std::clamp((pp - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
+      const double gap = (pp - (pa + l * (pb - pa))).norm();
+      const double rate =
+          std::max((across * (block(p) - block(edge[0]))).norm(), (across * (block(p) - block(edge[1]))).norm());
+      radius = std::min(radius, gap / rate);
+    }
+  }
+  return radius;
+}
+
+/// How far a radius may exceed theorem_radius, relative: above the rounding of both
+/// computations (about 1e-14), far below any slip in the formula (the unsafe direction).
+constexpr double kTheoremExcess = 1e-9;
+/// How far a radius may fall below theorem_radius, relative: the margins (1e-9 of the
+/// coordinates' magnitude, patch_radius.hpp) are up to 1e-5 of the smallest projected gaps.
+constexpr double kTheoremShortfall = 1e-3;
+
+}  // namespace
+
+TEST_CASE("patch radii: every patch's and every adjacent pair's radius is the theorem's", "[patch_radius]") {
+  int nodes_checked = 0, pairs_checked = 0;
+  for (const sscc::SubspaceModel& model : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
+      if (radii.node_radius(n) == 0.0) continue;
+      INFO("node " << n);
+      const double expected = theorem_radius(model, triangles_of(bvh, n), boundaries.chain(n));
+      REQUIRE(radii.node_radius(n) <= expected * (1.0 + kTheoremExcess));
+      REQUIRE(radii.node_radius(n) >= expected * (1.0 - kTheoremShortfall));
+      ++nodes_checked;
+    }
+    const std::vector<int> all = patches(radii, boundaries, static_cast<int>(bvh.nodes().size()));
+    std::vector<sscc::detail::DirectedEdge> union_chain;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      for (std::size_t j = i + 1; j < all.size(); ++j) {
+        const double radius = radii.pair_radius(all[i], all[j]);
+        if (radius == 0.0) continue;
+        INFO("patches " << all[i] << " and " << all[j]);
+        REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(all[i]), boundaries.chain(all[j]), union_chain));
+        std::vector<int> both = triangles_of(bvh, all[i]);
+        const std::vector<int> other = triangles_of(bvh, all[j]);
+        both.insert(both.end(), other.begin(), other.end());
+        const double expected = theorem_radius(model, both, union_chain);
+        REQUIRE(radius <= expected * (1.0 + kTheoremExcess));
+        REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
+        ++pairs_checked;
+      }
+    }
+  }
+  CHECK(nodes_checked > 20);
+  CHECK(pairs_checked > 5);
+}
+
+TEST_CASE("patch radii: a basis whose squares underflow scales the radii back, and a still basis divides by nothing",
+          "[patch_radius]") {
+  // The wavy sheet's modes times 1e-170: every square of a basis entry underflows to 0, so
+  // plain norms of the rates would be 0 and every radius infinite, while coordinates of norm
+  // 1e170 move the mesh as the original's of norm 1 do.
+  constexpr double kTiny = 1e-170;
+  const sscc::SubspaceModel original = models()[1];
+  const Eigen::MatrixXd basis = original.scaled_basis();
+  const sscc::SubspaceModel tiny(original.mesh(), basis * kTiny, VectorXd::Ones(original.mode_count()));
+  const sscc::SubspaceBvh original_bvh(original), tiny_bvh(tiny);
+  const sscc::detail::NodeBoundaries boundaries(original_bvh), tiny_boundaries(tiny_bvh);
+  const sscc::detail::PatchRadii radii(original_bvh, boundaries), tiny_radii(tiny_bvh, tiny_boundaries);
+  // The root holds the whole sheet in both hierarchies (their clusterings differ).
+  REQUIRE(radii.node_radius(0) > 0.0);
+  CHECK(tiny_radii.node_radius(0) * kTiny <= radii.node_radius(0) * (1.0 + kTheoremExcess));
+  CHECK(tiny_radii.node_radius(0) * kTiny >= radii.node_radius(0) * (1.0 - kTheoremShortfall));
+
+  // No mode moves anything: no rate, no rounding, the radii as large as they come, and no
+  // division by zero on the way (the test runner traps it).
+  const sscc::SubspaceModel still(original.mesh(), Eigen::MatrixXd::Zero(basis.rows(), basis.cols()),
+                                  VectorXd::Ones(original.mode_count()));
+  const sscc::SubspaceBvh still_bvh(still);
+  const sscc::detail::NodeBoundaries still_boundaries(still_bvh);
+  const sscc::detail::PatchRadii still_radii(still_bvh, still_boundaries);
+  CHECK(still_radii.node_radius(0) > 1e100);
 }
