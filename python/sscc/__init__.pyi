@@ -132,6 +132,13 @@ class SelfCcd:
         toi_tolerance: float = ...,
         minimum_separation: float = 0.0,
     ) -> SelfCcdReport: ...
+    def prepare(
+        self,
+        *,
+        use_certificates: bool = True,
+        use_normal_cones: bool = True,
+        use_displacement_bounds: bool = True,
+    ) -> None: ...
     def query_positions(
         self,
         x0: _Floats,
