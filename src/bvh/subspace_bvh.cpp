@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/scaled_norm.hpp"
+
 namespace sscc {
 
 namespace {
@@ -222,22 +224,19 @@ void SubspaceBvh::compute_bounds(int n) {
   rate_[n].setZero();
   for (int v : vertices) {
     for (int k = 0; k < 3; ++k) {
-      double squared = 0.0;
-      for (int j = 0; j < r; ++j) {
-        const double deviation = model_.scaled_basis()(3 * v + k, j) - mean[k * r + j];
-        squared += deviation * deviation;
-      }
-      rate_[n][k] = std::max(rate_[n][k], std::sqrt(squared));
+      // Scaled: squares of entries near 1e-154 and below underflow (common/scaled_norm.hpp).
+      const double deviation =
+          detail::scaled_norm(r, [&](int j) { return model_.scaled_basis()(3 * v + k, j) - mean[k * r + j]; });
+      rate_[n][k] = std::max(rate_[n][k], deviation);
     }
   }
   // Widen the rest box and the rates by a relative margin covering the rounding of the
   // vertex positions p + U_hat q_hat (an r-term dot product) and of the bound itself.
   const double relative = 4.0 * (r + 4) * std::numeric_limits<double>::epsilon();
   for (int k = 0; k < 3; ++k) {
-    double mean_norm = 0.0;
-    for (int j = 0; j < r; ++j) mean_norm += mean[k * r + j] * mean[k * r + j];
+    const double mean_norm = detail::scaled_norm(r, [&](int j) { return mean[k * r + j]; });
     half_[n][k] += relative * (std::fabs(centre_[n][k]) + half_[n][k]) + std::numeric_limits<double>::min();
-    rate_[n][k] += relative * (std::sqrt(mean_norm) + rate_[n][k]);
+    rate_[n][k] += relative * (mean_norm + rate_[n][k]);
   }
 }
 

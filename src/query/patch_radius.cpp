@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "common/parallel_tasks.hpp"
+#include "common/scaled_norm.hpp"
 #include "query/normal_cone.hpp"
 #include "query/patch_cull.hpp"
 #include "query/simple_contour.hpp"
@@ -65,15 +66,17 @@ class RadiusBounds {
     // |g| s, computed with a margin for its rounding.
     const Vector3d w2 = d.cross(e1), w1 = e2.cross(d);
     const double *rows0 = row_data(f[0]), *rows1 = row_data(f[1]), *rows2 = row_data(f[2]);
-    const double g_norm =
-        scaled_norm([&](int k) {
-          double g = 0.0;
-          for (int i = 0; i < 3; ++i) {
-            g += (rows2[i * r_ + k] - rows0[i * r_ + k]) * w2[i] + (rows1[i * r_ + k] - rows0[i * r_ + k]) * w1[i];
-          }
-          return g;
-        }) * kUp +
-        kRadiusMargin * (w2.norm() * m2 + w1.norm() * m1) + kUnderflowAllowance;
+    const double g_norm = scaled_norm(r_,
+                                      [&](int k) {
+                                        double g = 0.0;
+                                        for (int i = 0; i < 3; ++i) {
+                                          g += (rows2[i * r_ + k] - rows0[i * r_ + k]) * w2[i] +
+                                               (rows1[i * r_ + k] - rows0[i * r_ + k]) * w1[i];
+                                        }
+                                        return g;
+                                      }) *
+                              kUp +
+                          kRadiusMargin * (w2.norm() * m2 + w1.norm() * m1) + kUnderflowAllowance;
     const double constant = (2.0 * eta0_ * l0_sum + 4.0 * eta0_ * eta0_) * kUp;
     const double linear = (g_norm + 2.0 * eta0_ * m_sum + 2.0 * eta1_ * l0_sum + 8.0 * eta0_ * eta1_) * kUp;
     const double smallest_product = std::min({m1 * m2, m1 * m3, m2 * m3});
@@ -148,20 +151,6 @@ class RadiusBounds {
 
  private:
   /// Vertex v's scaled mode block (3 x r).
-  /// The 2-norm of value(0), ..., value(r - 1), scaled by the largest as Eigen's stableNorm
-  /// is: squares of tiny entries would underflow to 0.
-  template <typename Value>
-  double scaled_norm(Value value) const {
-    double largest = 0.0;
-    for (int k = 0; k < r_; ++k) largest = std::max(largest, std::abs(value(k)));
-    if (!(largest > 0.0) || !std::isfinite(largest)) return largest;
-    double sum = 0.0;
-    for (int k = 0; k < r_; ++k) {
-      const double scaled = value(k) / largest;
-      sum += scaled * scaled;
-    }
-    return largest * std::sqrt(sum);
-  }
   const double* row_data(int v) const {
     return bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_;
   }

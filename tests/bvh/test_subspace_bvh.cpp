@@ -84,3 +84,12 @@ TEST_CASE("BVH: the children of an edge-connected node are edge-connected patche
     CHECK(connected >= 0.99 * children);
   }
 }
+
+TEST_CASE("BVH: the bounds hold for a basis whose squares underflow", "[bvh]") {
+  // Modes of entries near 1e-170 (their squares underflow to 0) moved by coordinates near
+  // 1e170: the rates must not come out 0.
+  const sscc::TriangleMesh mesh = sscc::test::uv_sphere(8, 16);
+  const sscc::SubspaceModel model(mesh, 1e-170 * sscc::polynomial_basis(mesh, 27), Eigen::VectorXd::Ones(27));
+  const sscc::SubspaceBvh bvh(model);
+  CHECK(bvh.validate(30, 2e170, 5) == "");
+}

@@ -1,0 +1,27 @@
+// The 2-norm of a sequence scaled by its largest magnitude, as Eigen's stableNorm: a plain sum
+// of squares underflows to 0 for entries near 1e-154 and below, and a bound built on it (a box's
+// growth rate, a cone's radius) would then ignore motions that coordinates near 1e154 make
+// real. Private to the library.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace sscc::detail {
+
+/// sqrt(value(0)^2 + ... + value(count - 1)^2), within (count + 4) units of roundoff relative
+/// (plus an absolute error near 2^-1074 when the result is subnormal); value(k) is called twice.
+template <typename Value>
+double scaled_norm(int count, Value value) {
+  double largest = 0.0;
+  for (int k = 0; k < count; ++k) largest = std::max(largest, std::abs(value(k)));
+  if (!(largest > 0.0) || !std::isfinite(largest)) return largest;
+  double sum = 0.0;
+  for (int k = 0; k < count; ++k) {
+    const double scaled = value(k) / largest;
+    sum += scaled * scaled;
+  }
+  return largest * std::sqrt(sum);
+}
+
+}  // namespace sscc::detail
