@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <random>
 #include <string>
 
@@ -14,9 +15,11 @@
 #include "query/contour.hpp"
 #include "query/patch_radius.hpp"
 #include "query/simple_contour.hpp"
+#include "sscc/mesh/mesh_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "support/parametric_meshes.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
@@ -326,5 +329,57 @@ TEST_CASE("patch radii: on one-mode flat patches, sound below the radius and wit
     CHECK_FALSE(breaks(0.999 * radius));
     CHECK_FALSE(breaks(-0.999 * radius));
     CHECK((breaks(2.5 * radius) || breaks(-2.5 * radius)));
+  }
+}
+
+namespace {
+
+/// The disjoint node pairs under patches whose own union's radius beats their patches'
+/// union's (PatchRadii keeps a node pair's radius only then), checked to be unions of two
+/// simple cycles into one (union_is_simple_cycle's precondition, the theorem's hypothesis);
+/// returns how many were checked.
+int check_node_pair_unions(const sscc::SubspaceModel& model) {
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::detail::NodeBoundaries boundaries(bvh);
+  const sscc::detail::PatchRadii radii(bvh, boundaries);
+  const auto& nodes = bvh.nodes();
+  const int count = static_cast<int>(nodes.size());
+  std::vector<int> patch(count, -1);  // children follow their parent in the node array
+  for (int n = 0; n < count; ++n) {
+    const int parent = boundaries.parent(n);
+    patch[n] = parent >= 0 && patch[parent] >= 0 ? patch[parent] : radii.node_radius(n) > 0.0 ? n : -1;
+  }
+  int checked = 0;
+  std::vector<sscc::detail::DirectedEdge> sum;
+  for (int a = 0; a < count; ++a) {
+    for (int b = a + 1; b < count && patch[a] >= 0; ++b) {
+      const bool disjoint =
+          nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+      if (!disjoint || patch[b] < 0 || !(radii.pair_radius(a, b) > radii.pair_radius(patch[a], patch[b]))) continue;
+      ++checked;
+      INFO("nodes " << a << " and " << b << ", radius " << radii.pair_radius(a, b));
+      CHECK(boundaries.simple_cycle(a));
+      CHECK(boundaries.simple_cycle(b));
+      REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), sum));
+      CHECK(sscc::detail::is_simple_cycle(sum));
+    }
+  }
+  return checked;
+}
+
+}  // namespace
+
+TEST_CASE("patch radii: a node pair's own radius only for two simple cycles whose union is one", "[patch_radius]") {
+  for (const sscc::SubspaceModel& model : models()) CHECK(check_node_pair_unions(model) > 0);
+  // Nodes under patches that are not simple cycles (not connected, or pinched) occur on the
+  // real meshes, not on the parametric grids.
+  const std::filesystem::path meshes = std::filesystem::path(SSCC_SOURCE_DIR) / ".." / "shared" / "data" / "meshes";
+  if (!sscc::test::shared_data_present(meshes, "the real meshes")) return;
+  for (const char* name : {"lion.off", "ChineseDragon-10kv.off"}) {
+    INFO(name);
+    sscc::TriangleMesh mesh = sscc::read_mesh((meshes / name).string());
+    const Eigen::MatrixXd basis = sscc::polynomial_basis(mesh, sscc::kMaxPolynomialModes);
+    CHECK(check_node_pair_unions(
+              sscc::SubspaceModel(std::move(mesh), basis, VectorXd::Ones(sscc::kMaxPolynomialModes))) > 0);
   }
 }
