@@ -45,7 +45,10 @@
 // Which sets: every node of at least kSmallestConeNode triangles whose boundary is a simple
 // cycle, with d its area-weighted mean normal at rest; and the union of every two adjacent
 // patches (the largest nodes with a radius, each holding the nodes below it), with d their
-// joint mean normal: a node pair under two such patches is culled by their union's radius.
+// joint mean normal: a node pair under two such patches is culled by their union's radius;
+// and the union of two adjacent nodes under patches, each of at least kSmallestConeNode
+// triangles and a simple cycle, within kLargestUnionRatio in size, with their joint mean
+// normal, kept where it beats their patches' union.
 #pragma once
 
 #include <Eigen/Core>
