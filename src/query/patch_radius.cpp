@@ -304,7 +304,11 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
         holding_only(*u, *t, chain_u);
         for (int a : chain_t) {
           for (int b : chain_u) {
-            if (patch_[a] >= 0 && patch_[b] >= 0 && std::min(size(a), size(b)) >= kSmallestConeNode &&
+            // Each part a simple cycle: union_is_simple_cycle decides the union's boundary
+            // only then (a node under a patch may be disconnected or pinched, on the lion and
+            // the dragon; its union with a neighbour may then bound several cycles, which it accepts).
+            if (patch_[a] >= 0 && patch_[b] >= 0 && boundaries.simple_cycle(a) && boundaries.simple_cycle(b) &&
+                std::min(size(a), size(b)) >= kSmallestConeNode &&
                 std::max(size(a), size(b)) <= kLargestUnionRatio * std::min(size(a), size(b))) {
               node_candidates.insert(key_of(a, b));
             }

@@ -52,10 +52,11 @@
 // cycle, with d its area-weighted mean normal at rest; the union of every two adjacent
 // patches (the largest nodes with a radius, each holding the nodes below it), with d their
 // joint mean normal: a node pair under two such patches is culled by their union's radius;
-// and the union of two adjacent nodes under patches, of similar sizes (as the traversal pairs
-// them) and not leaves, kept where it beats their patches' union. Two nodes are adjacent when
-// triangles of theirs share an edge; a union whose boundary is not one simple cycle
-// (union_is_simple_cycle) gets no radius.
+// and the union of two adjacent nodes under patches, each of at least kSmallestConeNode
+// triangles (not leaves) and a simple cycle, within kLargestUnionRatio in size (as the
+// traversal pairs them), with their joint mean normal, kept where it beats their patches'
+// union. Two nodes are adjacent when triangles of theirs share an edge; a union whose
+// boundary is not one simple cycle (union_is_simple_cycle) gets no radius.
 //
 // Cost: built once per hierarchy, on every thread (0.35 s for the 15k-triangle lion, 2.9 s
 // for the 75k-triangle bunny, two threads); a query tests a node in O(1) and a node pair

@@ -788,7 +788,7 @@ void SelfCcd::prepare(const SelfCcdOptions& options) const {
   culls_->boundaries(options);
   culls_->radii(options);
   culls_->displacement(options, certificates != nullptr);
-  if (certificates && options.use_normal_cones) culls_->certified_fraction(0.0);
+  if (certificates) culls_->certified_fraction(0.0);  // query() asks for it with any certificates
 }
 
 double SelfCcd::step_norm(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1) const {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <random>
 #include <string>
@@ -15,9 +16,11 @@
 #include "query/contour.hpp"
 #include "query/patch_radius.hpp"
 #include "query/simple_contour.hpp"
+#include "sscc/mesh/mesh_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "support/parametric_meshes.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
@@ -452,4 +455,136 @@ TEST_CASE("patch radii: a basis whose squares underflow scales the radii back, a
   const sscc::detail::NodeBoundaries still_boundaries(still_bvh);
   const sscc::detail::PatchRadii still_radii(still_bvh, still_boundaries);
   CHECK(still_radii.node_radius(0) > 1e100);
+}
+
+namespace {
+
+/// The disjoint node pairs under patches whose own union's radius beats their patches'
+/// union's (PatchRadii keeps a node pair's radius only then), checked to be unions of two
+/// simple cycles into one (union_is_simple_cycle's precondition, the theorem's hypothesis);
+/// returns how many were checked.
+int check_node_pair_unions(const sscc::SubspaceModel& model) {
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::detail::NodeBoundaries boundaries(bvh);
+  const sscc::detail::PatchRadii radii(bvh, boundaries);
+  const auto& nodes = bvh.nodes();
+  const int count = static_cast<int>(nodes.size());
+  std::vector<int> patch(count, -1);  // children follow their parent in the node array
+  for (int n = 0; n < count; ++n) {
+    const int parent = boundaries.parent(n);
+    patch[n] = parent >= 0 && patch[parent] >= 0 ? patch[parent] : radii.node_radius(n) > 0.0 ? n : -1;
+  }
+  int checked = 0;
+  std::vector<sscc::detail::DirectedEdge> sum;
+  for (int a = 0; a < count; ++a) {
+    for (int b = a + 1; b < count && patch[a] >= 0; ++b) {
+      const bool disjoint =
+          nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+      if (!disjoint || patch[b] < 0 || !(radii.pair_radius(a, b) > radii.pair_radius(patch[a], patch[b]))) continue;
+      ++checked;
+      INFO("nodes " << a << " and " << b << ", radius " << radii.pair_radius(a, b));
+      CHECK(boundaries.simple_cycle(a));
+      CHECK(boundaries.simple_cycle(b));
+      REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), sum));
+      CHECK(sscc::detail::is_simple_cycle(sum));
+    }
+  }
+  return checked;
+}
+
+}  // namespace
+
+TEST_CASE("patch radii: a node pair's own radius only for two simple cycles whose union is one", "[patch_radius]") {
+  for (const sscc::SubspaceModel& model : models()) CHECK(check_node_pair_unions(model) > 0);
+  // Nodes under patches that are not simple cycles (not connected, or pinched) occur on the
+  // real meshes, not on the parametric grids.
+  const std::filesystem::path meshes = std::filesystem::path(SSCC_SOURCE_DIR) / ".." / "shared" / "data" / "meshes";
+  if (!sscc::test::shared_data_present(meshes, "the real meshes")) return;
+  for (const char* name : {"lion.off", "ChineseDragon-10kv.off"}) {
+    INFO(name);
+    sscc::TriangleMesh mesh = sscc::read_mesh((meshes / name).string());
+    const Eigen::MatrixXd basis = sscc::polynomial_basis(mesh, sscc::kMaxPolynomialModes);
+    CHECK(check_node_pair_unions(
+              sscc::SubspaceModel(std::move(mesh), basis, VectorXd::Ones(sscc::kMaxPolynomialModes))) > 0);
+  }
+}
+
+TEST_CASE("patch radii: steps just below node pairs' radii, toward their closest triangles, as exhaustive testing",
+          "[patch_radius][query]") {
+  // The default query (radii of nodes and node pairs, formed cones, displacement bounds) at
+  // norms where most node pairs' radii are tested (node_pair_fraction_above at least a half),
+  // in random directions and in directions that bring a node pair's closest triangles
+  // together fastest to first order, the step running through rest.
+  std::mt19937_64 rng(53);
+  long radius_culls = 0;
+  int adversarial_steps = 0;
+  for (const sscc::SubspaceModel& model : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::SelfCcd ccd(bvh);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const int r = model.mode_count();
+    const auto& nodes = bvh.nodes();
+    const int count = static_cast<int>(nodes.size());
+    // The norm below which three in five node pairs' radii lie above it (bisection).
+    double lo = 0.0, hi = 1.0;
+    while (radii.node_pair_fraction_above(hi) > 0.0) hi *= 2.0;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (radii.node_pair_fraction_above(mid) >= 0.6 ? lo : hi) = mid;
+    }
+    const double s = lo;
+    REQUIRE(radii.fraction_above(s) >= 0.02);  // the step tests the radii (self_ccd.cpp)
+    const auto compare = [&](const VectorXd& q0, const VectorXd& q1) {
+      const sscc::SelfCcdReport culled = ccd.query(q0, q1);
+      const sscc::SelfCcdReport exhaustive = ccd.query_exhaustive(q0, q1);
+      REQUIRE(culled.pairs == exhaustive.pairs);
+      REQUIRE(culled.features == exhaustive.features);
+      radius_culls += culled.stats.cone_radius_culled;
+    };
+    for (int step = 0; step < 10; ++step) {
+      compare(random_of_norm(rng, r, 0.999 * s), random_of_norm(rng, r, 0.999 * s));
+    }
+    const auto centroid = [&](int t) {
+      const sscc::Triangle& f = mesh.triangles()[t];
+      return ((mesh.vertices()[f[0]] + mesh.vertices()[f[1]] + mesh.vertices()[f[2]]) / 3.0).eval();
+    };
+    const auto centroid_block = [&](int t) {
+      Eigen::MatrixXd block = Eigen::MatrixXd::Zero(3, r);
+      for (int v : mesh.triangles()[t]) {
+        block += Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+                     model.scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r, 3, r) /
+                 3.0;
+      }
+      return block;
+    };
+    // Every 10th disjoint node pair whose radius exceeds s: q_hat = -q to q, with q of norm
+    // just below s moving the pair's closest non-adjacent centroids toward each other.
+    int seen = 0;
+    for (int a = 0; a < count; ++a) {
+      for (int b = a + 1; b < count; ++b) {
+        const bool disjoint =
+            nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+        if (!disjoint || !(radii.pair_radius(a, b) > s) || seen++ % 10 != 0) continue;
+        int closest_t = -1, closest_u = -1;
+        double closest = std::numeric_limits<double>::infinity();
+        for (int t : triangles_of(bvh, a)) {
+          for (int u : triangles_of(bvh, b)) {
+            const double distance = (centroid(t) - centroid(u)).norm();
+            if (!mesh.adjacent(t, u) && distance < closest) closest = distance, closest_t = t, closest_u = u;
+          }
+        }
+        if (closest_t < 0) continue;
+        const VectorXd toward = (centroid_block(closest_t) - centroid_block(closest_u)).transpose() *
+                                (centroid(closest_u) - centroid(closest_t));
+        if (!(toward.norm() > 0.0)) continue;
+        const VectorXd q = 0.999 * s * toward / toward.norm();
+        compare(-q, q);
+        ++adversarial_steps;
+      }
+    }
+  }
+  CHECK(radius_culls > 0);
+  CHECK(adversarial_steps > 20);
 }

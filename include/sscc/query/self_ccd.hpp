@@ -187,10 +187,11 @@ class SelfCcd {
   SelfCcdReport query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
 
   /// Builds what queries with these options precompute on their first use (the normal
-  /// cones' boundary chains and patches at rest, the certificates' sorted radii, the
-  /// displacement bounds' rest clearances and affine fits: 0.1 s on a 15k-triangle mesh), so
-  /// that no query pays for it. Optional; thread-safe. Without it the first query with the
-  /// defaults takes that much longer (the lion: 23 ms against 8 ms for the next ones).
+  /// cones' boundary chains, patches at rest and radii, the certificates' sorted radii, the
+  /// displacement bounds' rest clearances and affine fits), so that no query pays for it.
+  /// Optional; thread-safe. Without it the first query with the defaults takes that much
+  /// longer (measured before the cones' radii, which add to it: 0.1 s on a 15k-triangle
+  /// mesh, the lion's first query 23 ms against 8 ms for the next ones).
   void prepare(const SelfCcdOptions& options = {}) const;
 
   /// Whether the root's certificate alone decides the step (what query() then reports in
