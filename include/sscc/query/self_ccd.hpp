@@ -107,7 +107,7 @@ struct SelfCcdOptions {
   /// here. Not applied with a minimum separation (it proves no contact, not a distance) nor to
   /// query_discrete. Two forms: query() bounds the cones from the step's norm, O(1) per node,
   /// with radii built once per hierarchy for the patches proven at rest and their unions
-  /// (src/query/patch_radius.hpp; prepare() builds them: 0.35 s on a 15k-triangle mesh);
+  /// (src/query/patch_radius.hpp; prepare() builds them);
   /// where those cull little, and in query_positions, the cones are formed from the positions,
   /// on meshes whose patches proven at rest average 16 triangles or more (patch_cull.hpp,
   /// kSmallestMeanRestPatch), on the steps the certificates or the displacement bounds leave
@@ -189,9 +189,9 @@ class SelfCcd {
   /// Builds what queries with these options precompute on their first use (the normal
   /// cones' boundary chains, patches at rest and radii, the certificates' sorted radii, the
   /// displacement bounds' rest clearances and affine fits), so that no query pays for it.
-  /// Optional; thread-safe. Without it the first query with the defaults takes that much
-  /// longer (measured before the cones' radii, which add to it: 0.1 s on a 15k-triangle
-  /// mesh, the lion's first query 23 ms against 8 ms for the next ones).
+  /// Optional; thread-safe; on every thread. Without it the first query with the defaults
+  /// takes that much longer (without certificates, two threads: 0.63 s on the 15k-triangle
+  /// lion, 4.5 s on the 75k-triangle bunny; the next queries 2.4 and 7.8 ms).
   void prepare(const SelfCcdOptions& options = {}) const;
 
   /// Whether the root's certificate alone decides the step (what query() then reports in
