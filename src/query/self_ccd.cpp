@@ -82,7 +82,10 @@ constexpr double kLargestApartFractionForCones = 0.1;
 constexpr double kSmallestRadiusFractionForCones = 0.02;
 
 /// The node pairs' radii (patch_radius.hpp) are tested only when this fraction of them exceeds
-/// the step's norm: each costs a lookup in a large table.
+/// the step's norm: each costs a lookup in a large table. Measured, one thread, 5 steps, the
+/// cones query at amplitude 0.05 with them always tested (leaves' pairs then in the table
+/// too): the lion 12.4 ms against 10.7 without them, the 75k bunny 42.8 against 37.5; at 0.01
+/// (nine in ten above the norm) they pay. Lower: lookups that cull little; higher: culls lost.
 constexpr double kSmallestNodePairFractionForCones = 0.5;
 
 /// A step whose norm leaves more than this fraction of those radii above it forms no cones
