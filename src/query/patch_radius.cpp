@@ -80,7 +80,8 @@ class RadiusBounds {
     const double constant = (2.0 * eta0_ * l0_sum + 4.0 * eta0_ * eta0_) * kUp;
     const double linear = (g_norm + 2.0 * eta0_ * m_sum + 2.0 * eta1_ * l0_sum + 8.0 * eta0_ * eta1_) * kUp;
     const double smallest_product = std::min({m1 * m2, m1 * m3, m2 * m3});
-    const double quadratic = (smallest_product + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp;
+    const double quadratic = (smallest_product + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp +
+                             kUnderflowAllowance;  // products of rates near 1e-160 underflow
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
     if (!(slack > 0.0)) return 0.0;
     const double denominator = linear + std::sqrt(linear * linear + 4.0 * quadratic * slack);

@@ -43,8 +43,9 @@
 // The rates' norms are scaled ones (stableNorm): plain norms square the entries, which
 // underflow to 0 for bases of entries near 1e-160 and below, moved by coordinates near 1e160,
 // and would leave the radii unbounded; products in the subnormal range, which err absolutely,
-// are covered by kUnderflowAllowance (normal_cone.hpp). A mode-free set (every rate 0) gets an
-// infinite radius without dividing by zero.
+// are covered by kUnderflowAllowance (normal_cone.hpp), added to each rate and to the
+// quadratic term, whose products of two rates underflow first (such a basis keeps only tiny
+// radii). A mode-free set (every rate 0) gets an infinite radius without dividing by zero.
 // The step's norm s is computed in floating point too (relative error near 1e-15, inside the
 // margin).
 //

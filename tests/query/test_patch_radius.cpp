@@ -430,11 +430,15 @@ TEST_CASE("patch radii: every patch's and every adjacent pair's radius is the th
   CHECK(pairs_checked > 5);
 }
 
-TEST_CASE("patch radii: a basis whose squares underflow scales the radii back, and a still basis divides by nothing",
-          "[patch_radius]") {
+TEST_CASE(
+    "patch radii: a basis whose squares underflow gets no radius above the original's, and a still basis "
+    "divides by nothing",
+    "[patch_radius]") {
   // The wavy sheet's modes times 1e-170: every square of a basis entry underflows to 0, so
   // plain norms of the rates would be 0 and every radius infinite, while coordinates of norm
-  // 1e170 move the mesh as the original's of norm 1 do.
+  // 1e170 move the mesh as the original's of norm 1 do. The rates' norms are scaled, but their
+  // products underflow too and are bounded by kUnderflowAllowance: such a basis keeps radii
+  // far below the original's scaled back (it loses its culls), never above.
   constexpr double kTiny = 1e-170;
   const sscc::SubspaceModel original = models()[1];
   const Eigen::MatrixXd basis = original.scaled_basis();
@@ -445,7 +449,6 @@ TEST_CASE("patch radii: a basis whose squares underflow scales the radii back, a
   // The root holds the whole sheet in both hierarchies (their clusterings differ).
   REQUIRE(radii.node_radius(0) > 0.0);
   CHECK(tiny_radii.node_radius(0) * kTiny <= radii.node_radius(0) * (1.0 + kTheoremExcess));
-  CHECK(tiny_radii.node_radius(0) * kTiny >= radii.node_radius(0) * (1.0 - kTheoremShortfall));
 
   // No mode moves anything: no rate, no rounding, the radii as large as they come, and no
   // division by zero on the way (the test runner traps it).
@@ -587,4 +590,30 @@ TEST_CASE("patch radii: steps just below node pairs' radii, toward their closest
   }
   CHECK(radius_culls > 0);
   CHECK(adversarial_steps > 20);
+}
+
+TEST_CASE(
+    "patch radii: where the normals' quadratic term decides, a basis whose products underflow gets no larger radius",
+    "[patch_radius]") {
+  // A flat 4 x 4 vertex grid whose two interior vertices of one row move, one along x and one
+  // along y: the boundary stays still (no contour limit), and the triangles holding both turn
+  // through the product (E1 q) x (E2 q). Times 1e-170 the rates' products underflow; the
+  // radius must then not exceed the original's (scaled back), whatever it loses.
+  const std::vector<Vector3d> rest =
+      sscc::test::grid_positions(3, 3, false, false, [](double u, double v) { return Vector3d(u, v, 0.0); });
+  const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(3, 3, false, false);
+  Eigen::MatrixXd mode = Eigen::MatrixXd::Zero(3 * rest.size(), 1);
+  for (std::size_t v = 0; v < rest.size(); ++v) {
+    if (rest[v].isApprox(Vector3d(1.0 / 3, 1.0 / 3, 0.0))) mode(3 * v, 0) = 1.0;
+    if (rest[v].isApprox(Vector3d(2.0 / 3, 1.0 / 3, 0.0))) mode(3 * v + 1, 0) = 1.0;
+  }
+  const auto root_radius = [&](double scale) {
+    const Built built(sscc::SubspaceModel(sscc::TriangleMesh(rest, triangles), scale * mode, VectorXd::Ones(1)));
+    return built.radii.node_radius(0);
+  };
+  constexpr double kTiny = 1e-170;
+  const double original = root_radius(1.0);
+  REQUIRE(original > 0.0);
+  REQUIRE(std::isfinite(original));
+  CHECK(root_radius(kTiny) * kTiny <= original * (1.0 + kTheoremExcess));
 }
