@@ -182,8 +182,9 @@ std::pair<std::string, long> self_ccd_section(const BenchOptions& o, std::ostrea
   md << "\nSelf-CCD per mesh (" << table.basis << ", random trajectories, " << table.steps
      << " steps per row, FCL on the first " << std::min(table.fcl_steps, table.steps)
      << "; one thread; mean ms per step; traditional: swept boxes only, cones: with the normal-cone culls, "
-        "bounds: with the displacement bounds (the library's default without certificates), SSCC: the "
-        "certificates (computed once per mesh, default parameters), the library's defaults; the culls' data "
+        "bounds: with the displacement bounds, cones + bounds: with both (the library's defaults without "
+        "certificates), SSCC: the certificates (computed once per mesh, default parameters), the library's defaults; "
+        "the culls' data "
         "built before timing, as the certificates):\n\n"
      << self_ccd_table_markdown(rows);
   return {md.str(), disagreements};

@@ -47,13 +47,14 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
     const SubspaceModel model = load_model({mesh, o.basis, ""}, progress);
     const SubspaceBvh bvh(model);
     const SelfCcd ccd(bvh, cached_certificates(bvh, mesh, o, progress));
-    enum Method { kTraditional, kCones, kBounds, kSscc, kMethods };
+    enum Method { kTraditional, kCones, kBounds, kBoth, kSscc, kMethods };
     std::array<SelfCcdOptions, kMethods> options;
     set_traditional(options[kTraditional]);
     set_traditional(options[kCones]);
     options[kCones].use_normal_cones = true;
     set_traditional(options[kBounds]);
     options[kBounds].use_displacement_bounds = true;
+    options[kBoth].use_certificates = false;
     for (SelfCcdOptions& each : options) {
       each.threads = 1;
       ccd.prepare(each);  // precomputation, as the certificates: not timed
@@ -67,10 +68,10 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
       row.triangles = model.mesh().triangle_count();
       row.amplitude = amplitude;
       row.root_radius = ccd.certificates()->node_radius(0);
-      const std::array<double*, kMethods> milliseconds{&row.traditional_ms, &row.cones_ms, &row.bounds_ms,
+      const std::array<double*, kMethods> milliseconds{&row.traditional_ms, &row.cones_ms, &row.bounds_ms, &row.both_ms,
                                                        &row.sscc_ms};
       const std::array<double*, kMethods> nodes{&row.traditional_nodes, &row.cones_nodes, &row.bounds_nodes,
-                                                &row.sscc_nodes};
+                                                &row.both_nodes, &row.sscc_nodes};
       for (int k = 0; k < o.steps; ++k) {
         // Rotate which runs first, so that none always finds the caches warm.
         std::array<SelfCcdReport, kMethods> reports;
@@ -85,7 +86,7 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
         row.cones_pairs += static_cast<double>(reports[kCones].stats.triangle_pairs) / o.steps;
         row.root_certified_steps += reports[kSscc].stats.root_certified;
         row.colliding_steps += reports[kTraditional].collided();
-        for (int m : {kCones, kBounds, kSscc}) {
+        for (int m : {kCones, kBounds, kBoth, kSscc}) {
           row.identical = row.identical && reports[m].pairs == reports[kTraditional].pairs &&
                           reports[m].features == reports[kTraditional].features;
         }
@@ -106,21 +107,23 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
 
 std::string self_ccd_table_markdown(const std::vector<SelfCcdTableRow>& rows) {
   std::ostringstream md;
-  md << "| mesh | triangles | amplitude | traditional | cones | bounds | SSCC | FCL | cones vs traditional | "
-        "SSCC vs cones | SSCC vs traditional | FCL vs cones | FCL vs bounds | root-certified steps | "
-        "node tests (trad / cones / bounds / SSCC) | triangle pairs (trad / cones) | colliding | identical |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| mesh | triangles | amplitude | traditional | cones | bounds | cones + bounds | SSCC | FCL | "
+        "cones vs traditional | SSCC vs cones | SSCC vs traditional | FCL vs cones | FCL vs cones + bounds | "
+        "root-certified steps | node tests (trad / cones / bounds / cones + bounds / SSCC) | "
+        "triangle pairs (trad / cones) | colliding | identical |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SelfCcdTableRow& r : rows) {
     md << "| " << r.mesh << " | " << r.triangles << " | " << r.amplitude << " | " << format("%.2f ms", r.traditional_ms)
        << " | " << format("%.2f ms", r.cones_ms) << " | " << format("%.2f ms", r.bounds_ms) << " | "
-       << format("%.3f ms", r.sscc_ms) << " | " << format("%.1f ms", r.fcl_ms) << " | "
-       << format("%.2fx", r.traditional_ms / r.cones_ms) << " | " << format("%.2fx", r.cones_ms / r.sscc_ms) << " | "
-       << format("%.2fx", r.traditional_ms / r.sscc_ms) << " | " << format("%.1fx", r.fcl_ms / r.cones_ms) << " | "
-       << format("%.1fx", r.fcl_ms / r.bounds_ms) << " | " << r.root_certified_steps << " | "
+       << format("%.2f ms", r.both_ms) << " | " << format("%.3f ms", r.sscc_ms) << " | " << format("%.1f ms", r.fcl_ms)
+       << " | " << format("%.2fx", r.traditional_ms / r.cones_ms) << " | " << format("%.2fx", r.cones_ms / r.sscc_ms)
+       << " | " << format("%.2fx", r.traditional_ms / r.sscc_ms) << " | " << format("%.1fx", r.fcl_ms / r.cones_ms)
+       << " | " << format("%.1fx", r.fcl_ms / r.both_ms) << " | " << r.root_certified_steps << " | "
        << format("%.0f", r.traditional_nodes) << " / " << format("%.0f", r.cones_nodes) << " / "
-       << format("%.0f", r.bounds_nodes) << " / " << format("%.0f", r.sscc_nodes) << " | "
-       << format("%.0f", r.traditional_pairs) << " / " << format("%.0f", r.cones_pairs) << " | " << r.colliding_steps
-       << " | " << (r.identical ? "yes" : "no") << " |\n";
+       << format("%.0f", r.bounds_nodes) << " / " << format("%.0f", r.both_nodes) << " / "
+       << format("%.0f", r.sscc_nodes) << " | " << format("%.0f", r.traditional_pairs) << " / "
+       << format("%.0f", r.cones_pairs) << " | " << r.colliding_steps << " | " << (r.identical ? "yes" : "no")
+       << " |\n";
   }
   return md.str();
 }
