@@ -8,6 +8,7 @@
 
 #include "common/parallel_tasks.hpp"
 #include "common/scaled_norm.hpp"
+#include "common/sorted_fraction.hpp"
 #include "query/normal_cone.hpp"
 #include "query/patch_cull.hpp"
 #include "query/simple_contour.hpp"
@@ -366,19 +367,9 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   std::sort(sorted_pair_radii_.begin(), sorted_pair_radii_.end());
 }
 
-namespace {
+double PatchRadii::fraction_above(double s) const { return detail::fraction_above(sorted_radii_, s); }
 
-double fraction_of_sorted_above(const std::vector<double>& sorted, double s) {
-  if (sorted.empty()) return 0.0;
-  const auto above = sorted.end() - std::upper_bound(sorted.begin(), sorted.end(), s);
-  return static_cast<double>(above) / static_cast<double>(sorted.size());
-}
-
-}  // namespace
-
-double PatchRadii::fraction_above(double s) const { return fraction_of_sorted_above(sorted_radii_, s); }
-
-double PatchRadii::node_pair_fraction_above(double s) const { return fraction_of_sorted_above(sorted_pair_radii_, s); }
+double PatchRadii::node_pair_fraction_above(double s) const { return detail::fraction_above(sorted_pair_radii_, s); }
 
 double PatchRadii::lookup(const PairRadii& pairs, int a, int b) {
   if (a > b) std::swap(a, b);

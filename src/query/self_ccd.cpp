@@ -15,6 +15,7 @@
 
 #include "common/finite.hpp"
 #include "common/parallel_tasks.hpp"
+#include "common/sorted_fraction.hpp"
 #include "query/contour.hpp"
 #include "query/descent.hpp"
 #include "query/displacement_bound.hpp"
@@ -665,9 +666,7 @@ class CullData {
       }
       std::sort(radii_.begin(), radii_.end());
     });
-    if (radii_.empty()) return 0.0;
-    const auto above = radii_.end() - std::upper_bound(radii_.begin(), radii_.end(), s);
-    return static_cast<double>(above) / static_cast<double>(radii_.size());
+    return fraction_above(radii_, s);
   }
   /// Null when the query does not use the cones. Built on any mesh: they cost O(1) per node
   /// per query, so kSmallestMeanRestPatch does not apply.
