@@ -143,9 +143,8 @@ class RadiusBounds {
             (starts[j].from_mean + std::max(starts[i].from_mean, ends[i].from_mean) + 2.0 * eta1_) * kUp +
             kUnderflowAllowance;
         if (kDown * gap >= radius * bound) continue;
-        const double rate =
-            (std::max(projected_difference_norm(d, p, a), projected_difference_norm(d, p, b)) + 2.0 * eta1_) * kUp;
-        radius = std::min(radius, kDown * gap / rate);
+        radius = std::min(radius, pair_radius(d, starts[j].projected, p, starts[i].projected, a, ends[i].projected, b,
+                                              kRadiusMargin * magnitude + 2.0 * eta0_ * kUp));
       }
     }
     return radius;
@@ -159,39 +158,44 @@ class RadiusBounds {
   Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> block(int v) const {
     return {bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_, 3, r_};
   }
-  /// ||U_hat_a - U_hat_b||_F, rounded up.
-  double difference_norm(int a, int b) const { return (block(a) - block(b)).stableNorm() * kUp; }
-  /// ||(I - d d^T)(U_hat_a - U_hat_b)||_F for the unit d, rounded up: how fast the two
-  /// vertices part in projection along d.
-  double projected_difference_norm(const Vector3d& d, int a, int b) const {
-    // Column by column, without temporaries (the contour loops call this for most pairs), in
-    // two passes: the largest entries, then the squares scaled by them (as stableNorm).
-    const double* rows_a = row_data(a);
-    const double* rows_b = row_data(b);
-    const auto columns = [&](auto visit) {
-      for (int k = 0; k < r_; ++k) {
-        const Vector3d whole(rows_a[k] - rows_b[k], rows_a[r_ + k] - rows_b[r_ + k],
-                             rows_a[2 * r_ + k] - rows_b[2 * r_ + k]);
-        visit(whole - d.dot(whole) * d, whole);
-      }
-    };
-    double largest_across = 0.0, largest_whole = 0.0;
-    columns([&](const Vector3d& across, const Vector3d& whole) {
-      largest_across = std::max(largest_across, across.cwiseAbs().maxCoeff());
-      largest_whole = std::max(largest_whole, whole.cwiseAbs().maxCoeff());
-    });
-    if (!(largest_whole > 0.0)) return kUnderflowAllowance;
-    if (!std::isfinite(largest_whole)) return largest_whole;
-    double across_sum = 0.0, whole_sum = 0.0;
-    const double across_scale = largest_across > 0.0 ? largest_across : 1.0;
-    columns([&](const Vector3d& across, const Vector3d& whole) {
-      across_sum += (across / across_scale).squaredNorm();
-      whole_sum += (whole / largest_whole).squaredNorm();
-    });
-    return largest_across * std::sqrt(across_sum) * kUp + kRadiusMargin * largest_whole * std::sqrt(whole_sum) +
-           kUnderflowAllowance;
+  /// The root of hypothesis (ii) for vertex p and edge (a, b) (projected positions pp, pa,
+  /// pb; `margins` the gaps' rounding): along the unit direction nu of the projection plane
+  /// from p's closest point on the edge to p, p stays beyond both ends while each end's gap
+  /// along nu exceeds its parting rate along nu, ||(U_hat_p - U_hat_e)^T nu||, times s.
+  double pair_radius(const Vector3d& d, const Vector3d& pp, int p, const Vector3d& pa, int a, const Vector3d& pb, int b,
+                     double margins) const {
+    const Vector3d ab = pb - pa;
+    const double length2 = ab.squaredNorm();
+    const double l = length2 > 0.0 ? std::clamp((pp - pa).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    Vector3d nu = pp - (pa + l * ab);
+    nu -= nu.dot(d) * d;  // in the plane to rounding, whatever the coordinates' magnitude
+    const double length = nu.norm();
+    if (!(length > 0.0)) return 0.0;
+    nu /= length;
+    double radius = std::numeric_limits<double>::infinity();
+    for (const auto& [pe, e] : {std::pair<const Vector3d&, int>{pa, a}, std::pair<const Vector3d&, int>{pb, b}}) {
+      const double gap = nu.dot(pp - pe) - margins;
+      if (!(gap > 0.0)) return 0.0;
+      radius = std::min(radius, kDown * gap / ((directional_difference_norm(nu, p, e) + 2.0 * eta1_) * kUp));
+    }
+    return radius;
   }
 
+  /// ||(U_hat_a - U_hat_b)^T nu|| for the unit nu (nearly orthogonal to d), rounded up, plus
+  /// kRadiusMargin ||U_hat_a - U_hat_b||_F for nu's rounding: how fast the two vertices part
+  /// along nu.
+  double directional_difference_norm(const Vector3d& nu, int a, int b) const {
+    const double* rows_a = row_data(a);
+    const double* rows_b = row_data(b);
+    const auto along = [&](int k) {
+      return nu[0] * (rows_a[k] - rows_b[k]) + nu[1] * (rows_a[r_ + k] - rows_b[r_ + k]) +
+             nu[2] * (rows_a[2 * r_ + k] - rows_b[2 * r_ + k]);
+    };
+    return scaled_norm(r_, along) * kUp + kRadiusMargin * difference_norm(a, b) + kUnderflowAllowance;
+  }
+
+  /// ||U_hat_a - U_hat_b||_F, rounded up.
+  double difference_norm(int a, int b) const { return (block(a) - block(b)).stableNorm() * kUp; }
   static double point_segment_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b) {
     const Vector3d ab = b - a;
     const double length2 = ab.squaredNorm();

@@ -22,21 +22,24 @@
 //       The condition is a quadratic in s: below its positive root it holds.
 //  (ii) the projection along d of the boundary stays one simple closed polygon for every t of
 //       the step when it is one at rest and, for every boundary vertex p and boundary edge
-//       (a, b) not containing p, at rest distance c_pab (in projection) exceeds
-//         M_pab s + 2 eta,   M_pab = max(||P (U_hat_p - U_hat_a)||_F, ||P (U_hat_p - U_hat_b)||_F),
-//       P = I - d d^T the projection.
-//       Why: a point of the edge moves against p, in projection, by P ((1 - l)(U_hat_p -
-//       U_hat_a) + l (U_hat_p - U_hat_b)) q_hat, at most M_pab s, and the rounding by 2 eta
-//       (projecting shortens it). So along the path from rest to the step's start (q_hat
-//       scaled from 0, then the rounding switched on, every vertex moving linearly) and along
-//       the step, no vertex ever lies on an edge not containing it in projection, and
-//       simple_contour.hpp's lemma carries the rest polygon's simplicity to every t.
+//       (a, b) not containing p, with nu the unit direction of the projection plane from p's
+//       closest point on the edge to p (at rest, in projection), both ends e of the edge have
+//         nu . (p - e) > N_pe s + 2 eta,   N_pe = ||(U_hat_p - U_hat_e)^T nu||.
+//       Why: nu . (p - e) changes by nu^T (U_hat_p - U_hat_e) q_hat, at most N_pe s, and by the
+//       rounding at most 2 eta; while both stay positive, p lies beyond the line
+//       nu . x = max(nu . a, nu . b), which no point of the edge crosses, so p is not on the
+//       edge in projection (nu is in the plane, so nu . x is the same for x and its
+//       projection). So along the path from rest to the step's start (q_hat scaled from 0,
+//       then the rounding switched on, every vertex moving linearly) and along the step, no
+//       vertex ever lies on an edge not containing it in projection, and simple_contour.hpp's
+//       lemma carries the rest polygon's simplicity to every t. Only the parting along nu
+//       counts: sliding along the edge, or along d, does not close the gap.
 // The radius of S is the smallest of the roots of (i) over its triangles and of (ii) over its
 // boundary's vertex-edge pairs, 0 when a hypothesis fails at rest.
 //
 // FLOATING POINT. eta bounds the rounding of SubspaceModel::position (an r-term dot product and
 // an addition per coordinate, as the certificates allow for: triangle_pair_bound.cpp), doubled.
-// The rest quantities (c_T, the distances c_pab, the Frobenius norms) are computed in floating
+// The rest quantities (c_T, the gaps nu . (p - e), the norms) are computed in floating
 // point and moved by kRadiusMargin relative to their magnitudes, far beyond their rounding, so
 // each is a bound of the exact value in the safe direction; the rest polygon's simplicity is
 // decided by simple_contour.hpp's certified test; each radius is lowered by the same margin.

@@ -341,7 +341,7 @@ namespace {
 
 /// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
 /// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
-/// of c_T = A_T s + B_T s^2 over the triangles and of c_pab = M_pab s over the boundary's
+/// of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over the boundary's
 /// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
 /// in projection at rest or a triangle faces away.
 double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
@@ -376,10 +376,12 @@ double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& 
       if (p == edge[0] || p == edge[1]) continue;
       const Vector3d pp = across * rest[p];
       const double l = std::clamp((pp - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
-      const double gap = (pp - (pa + l * (pb - pa))).norm();
-      const double rate =
-          std::max((across * (block(p) - block(edge[0]))).norm(), (across * (block(p) - block(edge[1]))).norm());
-      radius = std::min(radius, gap / rate);
+      const Vector3d nu = (pp - (pa + l * (pb - pa))).normalized();  // from the closest point
+      for (const int e : {edge[0], edge[1]}) {
+        const double gap = nu.dot(pp - across * rest[e]);
+        const double rate = ((block(p) - block(e)).transpose() * nu).norm();
+        radius = std::min(radius, gap / rate);
+      }
     }
   }
   return radius;
