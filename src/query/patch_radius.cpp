@@ -363,10 +363,12 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   };
   note_largest(patch_pairs_, largest_patch_pair_);
   note_largest(node_pairs_, largest_node_pair_);
-  for (double radius : node_radius_) {
-    if (radius > 0.0) sorted_radii_.push_back(radius);
+  for (int n = 0; n < node_count; ++n) {
+    if (node_radius_[n] > 0.0) sorted_radii_.push_back(node_radius_[n]);
+    if (patch_[n] == n) sorted_patch_radii_.push_back(node_radius_[n]);
   }
   std::sort(sorted_radii_.begin(), sorted_radii_.end());
+  std::sort(sorted_patch_radii_.begin(), sorted_patch_radii_.end());
   for (const auto& pair : node_pairs_) sorted_pair_radii_.push_back(pair.second);
   std::sort(sorted_pair_radii_.begin(), sorted_pair_radii_.end());
 }
@@ -374,6 +376,8 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
 double PatchRadii::fraction_above(double s) const { return detail::fraction_above(sorted_radii_, s); }
 
 double PatchRadii::node_pair_fraction_above(double s) const { return detail::fraction_above(sorted_pair_radii_, s); }
+
+double PatchRadii::patch_fraction_above(double s) const { return detail::fraction_above(sorted_patch_radii_, s); }
 
 double PatchRadii::lookup(const PairRadii& pairs, int a, int b) {
   if (a > b) std::swap(a, b);

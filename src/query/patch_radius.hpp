@@ -113,6 +113,9 @@ class PatchRadii {
   double fraction_above(double s) const;
   /// The same for the radii of the node pairs.
   double node_pair_fraction_above(double s) const;
+  /// The same for the patches' radii: how much a step of norm s culls at the top of the
+  /// proven nodes, where the cones formed from the positions cull most.
+  double patch_fraction_above(double s) const;
 
   /// Patches (nodes with a radius whose ancestors have none), pairs of adjacent patches and
   /// pairs of adjacent nodes with a radius of their own, for tests and statistics.
@@ -137,7 +140,8 @@ class PatchRadii {
   // of its node pairs (0 for none).
   std::vector<double> largest_patch_pair_, largest_node_pair_;
   int patch_count_ = 0;
-  std::vector<double> sorted_radii_, sorted_pair_radii_;  // the positive node and node pair radii, ascending
+  // The positive radii of the nodes, the node pairs and the patches, ascending.
+  std::vector<double> sorted_radii_, sorted_pair_radii_, sorted_patch_radii_;
 };
 
 }  // namespace sscc::detail

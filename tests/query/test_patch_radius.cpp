@@ -396,6 +396,34 @@ constexpr double kTheoremShortfall = 1e-3;
 
 }  // namespace
 
+TEST_CASE("patch radii: the fractions above a norm count the nodes' and the patches' radii", "[patch_radius]") {
+  for (const sscc::SubspaceModel& model : models()) {
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::detail::PatchRadii radii(bvh, boundaries);
+    const int node_count = static_cast<int>(bvh.nodes().size());
+    const std::vector<int> tops = patches(radii, boundaries, node_count);
+    REQUIRE(static_cast<int>(tops.size()) == radii.patch_count());
+    std::vector<double> norms{0.0};
+    for (int n = 0; n < node_count; ++n) {
+      if (radii.node_radius(n) > 0.0) norms.push_back(radii.node_radius(n));
+    }
+    REQUIRE(norms.size() > 1);
+    for (std::size_t i = 0, count = norms.size(); i < count; ++i) norms.push_back(norms[i] * 0.999);
+    for (const double s : norms) {
+      int nodes = 0, nodes_above = 0, patches_above = 0;
+      for (int n = 0; n < node_count; ++n) {
+        nodes += radii.node_radius(n) > 0.0;
+        nodes_above += s < radii.node_radius(n);
+      }
+      for (const int n : tops) patches_above += s < radii.node_radius(n);
+      INFO("s = " << s);
+      CHECK(radii.fraction_above(s) == static_cast<double>(nodes_above) / nodes);
+      CHECK(radii.patch_fraction_above(s) == static_cast<double>(patches_above) / static_cast<double>(tops.size()));
+    }
+  }
+}
+
 TEST_CASE("patch radii: every patch's and every adjacent pair's radius is the theorem's", "[patch_radius]") {
   int nodes_checked = 0, pairs_checked = 0;
   for (const sscc::SubspaceModel& model : models()) {
