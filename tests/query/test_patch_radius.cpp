@@ -574,6 +574,52 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "patch radii: on random nearly shut C's far from the origin or with huge or tiny modes, no radius above the "
+    "theorem's",
+    "[patch_radius]") {
+  // Offsets of 1e7 make the projected positions' rounding (near 2e-9) a part in 1e8 of the
+  // gaps along nu (near 0.2), and leave nu computed from them off the projection plane by as
+  // much before its re-projection: only the margins keep the radius below the theorem's,
+  // computed on the same mesh moved back to the origin (exactly: the moved coordinates are
+  // within a factor 2 of the offset). Modes times 1e150 or 1e-170 scale every rate and radius
+  // (1e150: the hierarchy's clustering squares the modes' entries, which 1e170 would overflow);
+  // the scaled norms and kUnderflowAllowance keep their roots' radii from exceeding the
+  // original's.
+  std::mt19937_64 rng(71);
+  constexpr double kOffset = 1e7;
+  constexpr double kHuge = 1e150, kTiny = 1e-170;
+  int offset_nodes = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const sscc::SubspaceModel original = random_nearly_shut_c(rng);
+    std::vector<Vector3d> far = original.mesh().vertices();
+    for (Vector3d& x : far) x += Vector3d::Constant(kOffset);
+    std::vector<Vector3d> back = far;
+    for (Vector3d& x : back) x -= Vector3d::Constant(kOffset);
+    const std::vector<sscc::Triangle>& triangles = original.mesh().triangles();
+    const VectorXd weights = VectorXd::Ones(original.mode_count());
+    const sscc::SubspaceModel far_model(sscc::TriangleMesh(far, triangles), original.scaled_basis(), weights);
+    const sscc::SubspaceModel back_model(sscc::TriangleMesh(back, triangles), original.scaled_basis(), weights);
+    const Built built(far_model);
+    const auto& [bvh, boundaries, radii] = built;
+    for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
+      if (radii.node_radius(n) == 0.0) continue;
+      INFO("trial " << trial << ", node " << n);
+      REQUIRE(radii.node_radius(n) <=
+              theorem_radius(back_model, triangles_of(bvh, n), boundaries.chain(n)) * (1.0 + kTheoremExcess));
+      ++offset_nodes;
+    }
+    const Built original_built(original);
+    const double root = original_built.radii.node_radius(0);
+    for (const double scale : {kHuge, kTiny}) {
+      INFO("trial " << trial << ", modes times " << scale);
+      const Built scaled(sscc::SubspaceModel(original.mesh(), scale * original.scaled_basis(), weights));
+      CHECK(scaled.radii.node_radius(0) * scale <= root * (1.0 + kTheoremExcess));
+    }
+  }
+  CHECK(offset_nodes > 8);
+}
+
+TEST_CASE(
     "patch radii: a basis whose squares underflow gets no radius above the original's, and a still basis "
     "divides by nothing",
     "[patch_radius]") {
