@@ -806,3 +806,34 @@ TEST_CASE(
   REQUIRE(std::isfinite(original));
   CHECK(root_radius(kTiny) * kTiny <= original * (1.0 + kTheoremExcess));
 }
+
+TEST_CASE("patch radii: a set whose normals' sum has subnormal squares gets no radius above the theorem's",
+          "[patch_radius]") {
+  // Random nearly shut C's and their modes times 2^-250 to 2^-272 (the theorem's radius
+  // unchanged but for the coordinates' rounding, near 1e-16 relative): their normals' sums,
+  // products of two coordinates near 2^-540, have squares in the subnormal range, whose plain
+  // norm errs by up to tens of percent. A mean normal d off unit length by that much
+  // projects the contour with part of its extent along d, and gave radii up to 1.2% above
+  // the theorem's.
+  std::mt19937_64 rng(73);
+  constexpr double kFinest = 250.0, kCoarsest = 272.0, kScaleSteps = 352;
+  int positive = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    const sscc::SubspaceModel original = random_nearly_shut_c(rng);
+    const Built built(original);
+    const double theorem = theorem_radius(original, triangles_of(built.bvh, 0), built.boundaries.chain(0));
+    REQUIRE(theorem > 0.0);
+    for (int step = 0; step <= kScaleSteps; ++step) {
+      const double exponent = kFinest + (kCoarsest - kFinest) * step / kScaleSteps;
+      const double scale = std::exp2(-exponent);
+      std::vector<Vector3d> rest = original.mesh().vertices();
+      for (Vector3d& x : rest) x *= scale;
+      const Built tiny(sscc::SubspaceModel(sscc::TriangleMesh(rest, original.mesh().triangles()),
+                                           scale * original.scaled_basis(), VectorXd::Ones(original.mode_count())));
+      INFO("trial " << trial << ", times 2^-" << exponent);
+      REQUIRE(tiny.radii.node_radius(0) <= theorem * (1.0 + kTheoremExcess));
+      positive += tiny.radii.node_radius(0) > 0.0;
+    }
+  }
+  CHECK(positive > 0);  // the coarser scales, whose sums' squares are normal, keep their radii
+}
