@@ -217,9 +217,11 @@ class RadiusBounds {
 template <typename Triangles>
 double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const std::vector<DirectedEdge>& chain,
                   Triangles for_each_triangle, double floor = 0.0) {
-  const double length = normal_sum.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
-  const Vector3d d = normal_sum / length;
+  // d must be unit to rounding (FLOATING POINT in patch_radius.hpp): the norm of a sum whose
+  // squares are subnormal errs by up to tens of percent.
+  const double length2 = normal_sum.squaredNorm();
+  if (!(length2 >= std::numeric_limits<double>::min()) || !std::isfinite(length2)) return 0.0;
+  const Vector3d d = normal_sum / std::sqrt(length2);
   double radius = std::numeric_limits<double>::infinity();
   for_each_triangle([&](int t) {
     if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t));

@@ -50,7 +50,12 @@
 // quadratic term, whose products of two rates underflow first (such a basis keeps only tiny
 // radii). A mode-free set (every rate 0) gets an infinite radius without dividing by zero.
 // The step's norm s is computed in floating point too (relative error near 1e-15, inside the
-// margin).
+// margin). d, the normalized sum of the set's area-weighted normals, must be unit to rounding:
+// the contour's gaps are taken in the projection I - d d^T, which with |d| off 1 keeps part of
+// the extent along d (and the normals' quadratic term is not scaled by |d|). A sum whose
+// squares are subnormal (total area below about 1e-154, coordinates near 1e-80) has a plain
+// norm off by up to tens of percent (measured: radii 1.2% above the theorem's); such a set
+// gets no radius.
 //
 // Which sets: every node of at least kSmallestConeNode triangles whose boundary is a simple
 // cycle, with d its area-weighted mean normal at rest; the union of every two adjacent

@@ -281,18 +281,18 @@ FlatCase moving_interior_vertex() {
   return c;
 }
 
-/// A flat C (an annulus sector of 300 degrees) pushed shut: the part past 180 degrees moves
-/// along the chord from the end's inner corner to the start's, more the farther along, so the
-/// ends meet while the triangles only shear (the contour's radius decides).
-FlatCase closing_c() {
-  const double sector = 300.0 * M_PI / 180;
+/// A flat C (an annulus sector of `degrees`, `cells` cells along it) pushed shut: the part
+/// past 180 degrees moves along the chord from the end's inner corner to the start's, more the
+/// farther along, so the ends meet while the triangles only shear (the contour's radius decides).
+FlatCase closing_c(double degrees = 300.0, int cells = 30) {
+  const double sector = degrees * M_PI / 180;
   const sscc::test::Surface annulus = [sector](double u, double v) {
     const double r = 0.6 + 0.4 * v;
     return Vector3d(r * std::cos(sector * u), r * std::sin(sector * u), 0.0);
   };
   FlatCase c{"closing C",
-             sscc::test::grid_positions(30, 2, false, false, annulus),
-             sscc::test::grid_triangles(30, 2, false, false),
+             sscc::test::grid_positions(cells, 2, false, false, annulus),
+             sscc::test::grid_triangles(cells, 2, false, false),
              {}};
   const Vector3d chord =
       (Vector3d(0.6, 0.0, 0.0) - 0.6 * Vector3d(std::cos(sector), std::sin(sector), 0.0)).normalized();
@@ -339,21 +339,52 @@ TEST_CASE("patch radii: on one-mode flat patches, sound below the radius and wit
 
 namespace {
 
-/// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
-/// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
-/// of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over the boundary's
-/// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
-/// in projection at rest or a triangle faces away.
-double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
-                      const std::vector<sscc::detail::DirectedEdge>& chain) {
+/// Vertex v's scaled mode block (3 x r).
+Eigen::MatrixXd block_of(const sscc::SubspaceModel& model, int v) { return model.scaled_basis().middleRows(3 * v, 3); }
+
+/// The area-weighted mean normal at rest of `triangles`, normalized (the theorem's d).
+Vector3d mean_normal(const sscc::SubspaceModel& model, const std::vector<int>& triangles) {
   const std::vector<Vector3d>& rest = model.mesh().vertices();
-  const auto block = [&](int v) -> Eigen::MatrixXd { return model.scaled_basis().middleRows(3 * v, 3); };
   Vector3d sum = Vector3d::Zero();
   for (int t : triangles) {
     const sscc::Triangle& f = model.mesh().triangles()[t];
     sum += (rest[f[1]] - rest[f[0]]).cross(rest[f[2]] - rest[f[0]]);
   }
-  const Vector3d d = sum.normalized();
+  return sum.normalized();
+}
+
+/// Hypothesis (ii)'s terms (patch_radius.hpp), rounding left out: for every vertex p of the
+/// boundary `chain` and edge (a, b) of it not containing p, with nu the unit direction of the
+/// projection along d from p's closest point on the edge to p, visit(p, a, b, l, nu) (l the
+/// closest point's parameter along the edge).
+template <typename Visit>
+void for_each_contour_pair(const sscc::SubspaceModel& model, const Vector3d& d,
+                           const std::vector<sscc::detail::DirectedEdge>& chain, Visit visit) {
+  const std::vector<Vector3d>& rest = model.mesh().vertices();
+  const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - d * d.transpose();
+  for (const auto& edge : chain) {
+    const Vector3d pa = across * rest[edge[0]], pb = across * rest[edge[1]];
+    for (const auto& other : chain) {
+      const int p = other[0];
+      if (p == edge[0] || p == edge[1]) continue;
+      const Vector3d pp = across * rest[p];
+      const double l = std::clamp((pp - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
+      visit(p, edge[0], edge[1], l, (pp - (pa + l * (pb - pa))).normalized());
+    }
+  }
+}
+
+/// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
+/// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
+/// of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over the boundary's
+/// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
+/// in projection at rest or a triangle faces away. `contour`, when given, receives the
+/// contour's part alone.
+double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
+                      const std::vector<sscc::detail::DirectedEdge>& chain, double* contour = nullptr) {
+  const std::vector<Vector3d>& rest = model.mesh().vertices();
+  const auto block = [&](int v) { return block_of(model, v); };
+  const Vector3d d = mean_normal(model, triangles);
   if (!sscc::detail::stays_simple_in_projection(d, chain, rest, rest)) return 0.0;
   double radius = std::numeric_limits<double>::infinity();
   for (int t : triangles) {
@@ -369,22 +400,16 @@ double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& 
     radius = std::min(radius, 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c)));  // no cancellation
   }
   const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - d * d.transpose();
-  for (const auto& edge : chain) {
-    const Vector3d pa = across * rest[edge[0]], pb = across * rest[edge[1]];
-    for (const auto& other : chain) {
-      const int p = other[0];
-      if (p == edge[0] || p == edge[1]) continue;
-      const Vector3d pp = across * rest[p];
-      const double l = std::clamp((pp - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
-      const Vector3d nu = (pp - (pa + l * (pb - pa))).normalized();  // from the closest point
-      for (const int e : {edge[0], edge[1]}) {
-        const double gap = nu.dot(pp - across * rest[e]);
-        const double rate = ((block(p) - block(e)).transpose() * nu).norm();
-        radius = std::min(radius, gap / rate);
-      }
+  double contour_radius = std::numeric_limits<double>::infinity();
+  for_each_contour_pair(model, d, chain, [&](int p, int a, int b, double, const Vector3d& nu) {
+    for (const int e : {a, b}) {
+      const double gap = nu.dot(across * (rest[p] - rest[e]));
+      const double rate = ((block(p) - block(e)).transpose() * nu).norm();
+      contour_radius = std::min(contour_radius, gap / rate);
     }
-  }
-  return radius;
+  });
+  if (contour) *contour = contour_radius;
+  return std::min(radius, contour_radius);
 }
 
 /// How far a radius may exceed theorem_radius, relative: above the rounding of both
@@ -458,6 +483,168 @@ TEST_CASE("patch radii: every patch's and every adjacent pair's radius is the th
   }
   CHECK(nodes_checked > 20);
   CHECK(pairs_checked > 5);
+}
+
+namespace {
+
+/// A nearly shut flat C (ends 10 to 30 degrees apart, 12 to 23 cells, slightly wavy and
+/// jittered) whose first mode pushes it shut (closing_c) and whose two others move every
+/// vertex at random: the contour's radius decides for many of its nodes, the normals' for others.
+sscc::SubspaceModel random_nearly_shut_c(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> normal;
+  const FlatCase c = closing_c(330.0 + 20.0 * uniform(rng), 12 + static_cast<int>(12.0 * uniform(rng)));
+  constexpr int kModes = 3;
+  constexpr double kJitter = 0.01, kWave = 0.05, kNoiseMode = 0.05;
+  std::vector<Vector3d> rest = c.rest;
+  for (Vector3d& x : rest) {
+    x += kJitter * Vector3d(normal(rng), normal(rng), normal(rng));
+    x.z() += kWave * std::sin(5.0 * std::atan2(x.y(), x.x()));
+  }
+  Eigen::MatrixXd basis(3 * rest.size(), kModes);
+  for (std::size_t v = 0; v < rest.size(); ++v) {
+    basis.block<3, 1>(3 * v, 0) = c.mode[v];
+    for (int k = 1; k < kModes; ++k) {
+      for (int i = 0; i < 3; ++i) basis(3 * v + i, k) = kNoiseMode * normal(rng);
+    }
+  }
+  return sscc::SubspaceModel(sscc::TriangleMesh(rest, c.triangles), basis, VectorXd::Ones(kModes));
+}
+
+}  // namespace
+
+TEST_CASE(
+    "patch radii: on random nearly shut C's, the theorem's radius, and steps just below it that close a boundary "
+    "gap fastest keep the contour simple and touch nothing",
+    "[patch_radius]") {
+  // For every node with a radius R: R against theorem_radius; then, at norm 0.999 R, for each
+  // boundary vertex p and edge (a, b) not containing p, the directions that close fastest
+  // p's gap along nu to each end and to its closest point on the edge: the contour stays
+  // simple in projection at sampled t of the step from rest, every normal stays on d's side
+  // at its end (positions are linear in q, so the step's t is the norm's fraction); for the
+  // patches, the directions of the three pairs of smallest radius and a random step are
+  // brute-forced (no two non-adjacent triangles touch).
+  std::mt19937_64 rng(67);
+  constexpr int kTrials = 12;
+  constexpr int kBruteForcedPairs = 3;
+  constexpr double kStepSamples[] = {0.25, 0.5, 0.75, 1.0};
+  int contour_decided = 0, adversarial_steps = 0, brute_forced = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const sscc::SubspaceModel model = random_nearly_shut_c(rng);
+    const Built built(model);
+    const auto& [bvh, boundaries, radii] = built;
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const std::vector<Vector3d>& rest = mesh.vertices();
+    const int r = model.mode_count();
+    const std::vector<int> top = patches(radii, boundaries, static_cast<int>(bvh.nodes().size()));
+    for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
+      const double radius = radii.node_radius(n);
+      if (radius == 0.0) continue;
+      INFO("trial " << trial << ", node " << n << ", radius " << radius);
+      REQUIRE(std::isfinite(radius));
+      const std::vector<int> triangles = triangles_of(bvh, n);
+      const std::vector<sscc::detail::DirectedEdge>& chain = boundaries.chain(n);
+      double contour = std::numeric_limits<double>::infinity();
+      const double expected = theorem_radius(model, triangles, chain, &contour);
+      REQUIRE(radius <= expected * (1.0 + kTheoremExcess));
+      REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
+      contour_decided += contour == expected;
+      const double s = 0.999 * radius;
+      const Vector3d d = mean_normal(model, triangles);
+      // The closing directions, each with its gap over its closing rate (the first to close).
+      std::vector<std::pair<double, VectorXd>> closing;
+      for_each_contour_pair(model, d, chain, [&](int p, int a, int b, double l, const Vector3d& nu) {
+        const Eigen::MatrixXd closest = (1.0 - l) * block_of(model, a) + l * block_of(model, b);
+        const Vector3d closest_point = (1.0 - l) * rest[a] + l * rest[b];
+        const std::pair<Vector3d, Eigen::MatrixXd> targets[] = {
+            {rest[a], block_of(model, a)}, {rest[b], block_of(model, b)}, {closest_point, closest}};
+        for (const auto& [target, target_block] : targets) {
+          const VectorXd toward = (block_of(model, p) - target_block).transpose() * nu;
+          if (!(toward.norm() > 0.0)) continue;
+          closing.emplace_back(nu.dot(rest[p] - target) / toward.norm(), -s * toward / toward.norm());
+        }
+      });
+      for (const auto& [pair_radius, q] : closing) {
+        // At sampled t: stays_simple_in_projection over the whole step refuses where a vertex
+        // ends close to an edge (its Bernstein coefficients are not subdivided), which the
+        // theorem allows.
+        for (const double fraction : kStepSamples) {
+          const std::vector<Vector3d> x = model.deformed_positions(fraction * q);
+          REQUIRE(sscc::detail::stays_simple_in_projection(d, chain, x, x));
+        }
+        const std::vector<Vector3d> x = model.deformed_positions(q);
+        for (int t : triangles) REQUIRE(along(d, x, mesh.triangles()[t]) > 0.0);
+        ++adversarial_steps;
+      }
+      if (std::find(top.begin(), top.end(), n) == top.end()) continue;
+      std::sort(closing.begin(), closing.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::vector<std::pair<VectorXd, VectorXd>> steps{{random_of_norm(rng, r, s), random_of_norm(rng, r, s)}};
+      for (int i = 0; i < std::min<int>(kBruteForcedPairs, static_cast<int>(closing.size())); ++i) {
+        steps.emplace_back(VectorXd::Zero(r), closing[i].second);
+      }
+      for (const auto& [q0, q1] : steps) {
+        const std::vector<Vector3d> x0 = model.deformed_positions(q0), x1 = model.deformed_positions(q1);
+        for (int t : triangles) {
+          for (int u : triangles) {
+            if (t < u && !mesh.adjacent(t, u)) {
+              REQUIRE(sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[t], mesh.triangles()[u]) >
+                      1.0);
+            }
+          }
+        }
+        ++brute_forced;
+      }
+    }
+  }
+  CHECK(contour_decided > kTrials);
+  CHECK(adversarial_steps > 1000);
+  CHECK(brute_forced > 2 * kTrials);
+}
+
+TEST_CASE(
+    "patch radii: on random nearly shut C's far from the origin or with huge or tiny modes, no radius above the "
+    "theorem's",
+    "[patch_radius]") {
+  // Offsets of 1e7 make the projected positions' rounding (near 2e-9) a part in 1e8 of the
+  // gaps along nu (near 0.2), and leave nu computed from them off the projection plane by as
+  // much before its re-projection: only the margins keep the radius below the theorem's,
+  // computed on the same mesh moved back to the origin (exactly: the moved coordinates are
+  // within a factor 2 of the offset). Modes times 1e150 or 1e-170 scale every rate and radius
+  // (1e150: the hierarchy's clustering squares the modes' entries, which 1e170 would overflow);
+  // the scaled norms and kUnderflowAllowance keep their roots' radii from exceeding the
+  // original's.
+  std::mt19937_64 rng(71);
+  constexpr double kOffset = 1e7;
+  constexpr double kHuge = 1e150, kTiny = 1e-170;
+  int offset_nodes = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const sscc::SubspaceModel original = random_nearly_shut_c(rng);
+    std::vector<Vector3d> far = original.mesh().vertices();
+    for (Vector3d& x : far) x += Vector3d::Constant(kOffset);
+    std::vector<Vector3d> back = far;
+    for (Vector3d& x : back) x -= Vector3d::Constant(kOffset);
+    const std::vector<sscc::Triangle>& triangles = original.mesh().triangles();
+    const VectorXd weights = VectorXd::Ones(original.mode_count());
+    const sscc::SubspaceModel far_model(sscc::TriangleMesh(far, triangles), original.scaled_basis(), weights);
+    const sscc::SubspaceModel back_model(sscc::TriangleMesh(back, triangles), original.scaled_basis(), weights);
+    const Built built(far_model);
+    const auto& [bvh, boundaries, radii] = built;
+    for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
+      if (radii.node_radius(n) == 0.0) continue;
+      INFO("trial " << trial << ", node " << n);
+      REQUIRE(radii.node_radius(n) <=
+              theorem_radius(back_model, triangles_of(bvh, n), boundaries.chain(n)) * (1.0 + kTheoremExcess));
+      ++offset_nodes;
+    }
+    const Built original_built(original);
+    const double root = original_built.radii.node_radius(0);
+    for (const double scale : {kHuge, kTiny}) {
+      INFO("trial " << trial << ", modes times " << scale);
+      const Built scaled(sscc::SubspaceModel(original.mesh(), scale * original.scaled_basis(), weights));
+      CHECK(scaled.radii.node_radius(0) * scale <= root * (1.0 + kTheoremExcess));
+    }
+  }
+  CHECK(offset_nodes > 8);
 }
 
 TEST_CASE(
@@ -646,4 +833,35 @@ TEST_CASE(
   REQUIRE(original > 0.0);
   REQUIRE(std::isfinite(original));
   CHECK(root_radius(kTiny) * kTiny <= original * (1.0 + kTheoremExcess));
+}
+
+TEST_CASE("patch radii: a set whose normals' sum has subnormal squares gets no radius above the theorem's",
+          "[patch_radius]") {
+  // Random nearly shut C's and their modes times 2^-250 to 2^-272 (the theorem's radius
+  // unchanged but for the coordinates' rounding, near 1e-16 relative): their normals' sums,
+  // products of two coordinates near 2^-540, have squares in the subnormal range, whose plain
+  // norm errs by up to tens of percent. A mean normal d off unit length by that much
+  // projects the contour with part of its extent along d, and gave radii up to 1.2% above
+  // the theorem's.
+  std::mt19937_64 rng(73);
+  constexpr double kFinest = 250.0, kCoarsest = 272.0, kScaleSteps = 352;
+  int positive = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    const sscc::SubspaceModel original = random_nearly_shut_c(rng);
+    const Built built(original);
+    const double theorem = theorem_radius(original, triangles_of(built.bvh, 0), built.boundaries.chain(0));
+    REQUIRE(theorem > 0.0);
+    for (int step = 0; step <= kScaleSteps; ++step) {
+      const double exponent = kFinest + (kCoarsest - kFinest) * step / kScaleSteps;
+      const double scale = std::exp2(-exponent);
+      std::vector<Vector3d> rest = original.mesh().vertices();
+      for (Vector3d& x : rest) x *= scale;
+      const Built tiny(sscc::SubspaceModel(sscc::TriangleMesh(rest, original.mesh().triangles()),
+                                           scale * original.scaled_basis(), VectorXd::Ones(original.mode_count())));
+      INFO("trial " << trial << ", times 2^-" << exponent);
+      REQUIRE(tiny.radii.node_radius(0) <= theorem * (1.0 + kTheoremExcess));
+      positive += tiny.radii.node_radius(0) > 0.0;
+    }
+  }
+  CHECK(positive > 0);  // the coarser scales, whose sums' squares are normal, keep their radii
 }
