@@ -143,8 +143,12 @@ class RadiusBounds {
             (starts[j].from_mean + std::max(starts[i].from_mean, ends[i].from_mean) + 2.0 * eta1_) * kUp +
             kUnderflowAllowance;
         if (kDown * gap >= radius * bound) continue;
-        radius = std::min(radius, pair_radius(d, starts[j].projected, p, starts[i].projected, a, ends[i].projected, b,
-                                              kRadiusMargin * magnitude + 2.0 * eta0_ * kUp));
+        // ||U_hat_p - U_hat_e||_F through C, for pair_radius's margin on nu's rounding.
+        const double apart_a = (starts[j].from_mean + starts[i].from_mean) * kUp;
+        const double apart_b = (starts[j].from_mean + ends[i].from_mean) * kUp;
+        radius = std::min(radius,
+                          pair_radius(d, {starts[j].projected, p, 0.0}, {starts[i].projected, a, apart_a},
+                                      {ends[i].projected, b, apart_b}, kRadiusMargin * magnitude + 2.0 * eta0_ * kUp));
       }
     }
     return radius;
@@ -158,40 +162,47 @@ class RadiusBounds {
   Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> block(int v) const {
     return {bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_, 3, r_};
   }
-  /// The root of hypothesis (ii) for vertex p and edge (a, b) (projected positions pp, pa,
-  /// pb; `margins` the gaps' rounding): along the unit direction nu of the projection plane
-  /// from p's closest point on the edge to p, p stays beyond both ends while each end's gap
-  /// along nu exceeds its parting rate along nu, ||(U_hat_p - U_hat_e)^T nu||, times s.
-  double pair_radius(const Vector3d& d, const Vector3d& pp, int p, const Vector3d& pa, int a, const Vector3d& pb, int b,
+  /// A boundary vertex in pair_radius: its projected rest position, its index and, for an
+  /// edge's end, a bound of ||U_hat_p - U_hat_e||_F.
+  struct ContourPoint {
+    Vector3d projected;
+    int vertex;
+    double apart;
+  };
+  /// The root of hypothesis (ii) for vertex p and edge (a, b) (`margins` the gaps'
+  /// rounding): along the unit direction nu of the projection plane from p's closest point
+  /// on the edge to p, p stays beyond both ends while each end's gap along nu exceeds its
+  /// parting rate along nu, ||(U_hat_p - U_hat_e)^T nu||, times s.
+  double pair_radius(const Vector3d& d, const ContourPoint& p, const ContourPoint& a, const ContourPoint& b,
                      double margins) const {
-    const Vector3d ab = pb - pa;
+    const Vector3d ab = b.projected - a.projected;
     const double length2 = ab.squaredNorm();
-    const double l = length2 > 0.0 ? std::clamp((pp - pa).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    Vector3d nu = pp - (pa + l * ab);
+    const double l = length2 > 0.0 ? std::clamp((p.projected - a.projected).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    Vector3d nu = p.projected - (a.projected + l * ab);
     nu -= nu.dot(d) * d;  // in the plane to rounding, whatever the coordinates' magnitude
     const double length = nu.norm();
     if (!(length > 0.0)) return 0.0;
     nu /= length;
     double radius = std::numeric_limits<double>::infinity();
-    for (const auto& [pe, e] : {std::pair<const Vector3d&, int>{pa, a}, std::pair<const Vector3d&, int>{pb, b}}) {
-      const double gap = nu.dot(pp - pe) - margins;
+    for (const ContourPoint* e : {&a, &b}) {
+      const double gap = nu.dot(p.projected - e->projected) - margins;
       if (!(gap > 0.0)) return 0.0;
-      radius = std::min(radius, kDown * gap / ((directional_difference_norm(nu, p, e) + 2.0 * eta1_) * kUp));
+      radius = std::min(radius, kDown * gap / ((directional_rate(nu, p.vertex, *e) + 2.0 * eta1_) * kUp));
     }
     return radius;
   }
 
-  /// ||(U_hat_a - U_hat_b)^T nu|| for the unit nu (nearly orthogonal to d), rounded up, plus
-  /// kRadiusMargin ||U_hat_a - U_hat_b||_F for nu's rounding: how fast the two vertices part
-  /// along nu.
-  double directional_difference_norm(const Vector3d& nu, int a, int b) const {
-    const double* rows_a = row_data(a);
-    const double* rows_b = row_data(b);
+  /// ||(U_hat_p - U_hat_e)^T nu|| for the unit nu (nearly orthogonal to d), rounded up, plus
+  /// kRadiusMargin ||U_hat_p - U_hat_e||_F (bounded by e.apart) for nu's rounding: how fast
+  /// the two vertices part along nu.
+  double directional_rate(const Vector3d& nu, int p, const ContourPoint& e) const {
+    const double* rows_p = row_data(p);
+    const double* rows_e = row_data(e.vertex);
     const auto along = [&](int k) {
-      return nu[0] * (rows_a[k] - rows_b[k]) + nu[1] * (rows_a[r_ + k] - rows_b[r_ + k]) +
-             nu[2] * (rows_a[2 * r_ + k] - rows_b[2 * r_ + k]);
+      return nu[0] * (rows_p[k] - rows_e[k]) + nu[1] * (rows_p[r_ + k] - rows_e[r_ + k]) +
+             nu[2] * (rows_p[2 * r_ + k] - rows_e[2 * r_ + k]);
     };
-    return scaled_norm(r_, along) * kUp + kRadiusMargin * difference_norm(a, b) + kUnderflowAllowance;
+    return scaled_norm(r_, along) * kUp + kRadiusMargin * e.apart + kUnderflowAllowance;
   }
 
   /// ||U_hat_a - U_hat_b||_F, rounded up.
