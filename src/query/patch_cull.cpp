@@ -7,14 +7,18 @@
 namespace sscc::detail {
 
 PatchCull::PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
-                     const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle)
+                     const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle, Caches& caches)
     : bvh_(bvh),
       boundaries_(boundaries),
       x0_(x0),
       x1_(x1),
       ensure_triangle_(std::move(ensure_triangle)),
-      cones_(bvh.nodes().size()),
-      self_verdicts_(bvh.nodes().size()) {}
+      cones_(caches.cones),
+      self_verdicts_(caches.self_verdicts),
+      union_chain_(caches.union_chain) {
+  cones_.reset(bvh.nodes().size());
+  self_verdicts_.reset(bvh.nodes().size());
+}
 
 PatchCull::NodeCone PatchCull::leaf_cone(const SubspaceBvh::Node& leaf) {
   std::array<BernsteinNormals, kMaxLeafTriangles> normals;
@@ -85,7 +89,9 @@ bool PatchCull::cannot_touch(int a, int b) {
 
 double mean_patch_at_rest(const SubspaceBvh& bvh, const NodeBoundaries& boundaries) {
   const std::vector<Eigen::Vector3d>& rest = bvh.model().mesh().vertices();
-  PatchCull cull(bvh, boundaries, rest, rest, [](int) {});
+  PatchCull::Caches caches;
+  PatchCull cull(
+      bvh, boundaries, rest, rest, [](int) {}, caches);
   long triangles = 0, patches = 0;
   std::vector<int> stack{0};
   while (!stack.empty()) {

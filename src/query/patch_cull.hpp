@@ -136,10 +136,24 @@ double mean_patch_at_rest(const SubspaceBvh& bvh, const NodeBoundaries& boundari
 /// (normal_cone.hpp), so a node's cone costs O(1) once its children's are known and a pair's
 /// union costs O(1); the union's boundary costs O(k log k) for k boundary edges.
 class PatchCull {
+  /// A node's normal cone and the sum of its triangles' coefficient vectors (area-weighted
+  /// normals, the axis of its parent's cone).
+  struct NodeCone {
+    NormalCone cone;
+    Eigen::Vector3d normal_sum;
+  };
+
  public:
   using EnsureTriangle = std::function<void(int)>;
+  /// The per-node caches of one query, kept for the next by whoever lends them (the
+  /// constructor resets them): reused, they cost no allocation (step_buffers.hpp).
+  struct Caches {
+    LazyBoxes<NodeCone> cones;
+    LazyBoxes<char> self_verdicts;          // cannot_self_touch's answers, once per node
+    std::vector<DirectedEdge> union_chain;  // scratch of cannot_touch
+  };
   PatchCull(const SubspaceBvh& bvh, const NodeBoundaries& boundaries, const std::vector<Eigen::Vector3d>& x0,
-            const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle);
+            const std::vector<Eigen::Vector3d>& x1, EnsureTriangle ensure_triangle, Caches& caches);
 
   /// Whether node n's triangles provably never touch one another during the step (tried for
   /// nodes of at least kSmallestConeNode triangles).
@@ -149,12 +163,6 @@ class PatchCull {
   bool cannot_touch(int a, int b);
 
  private:
-  /// A node's normal cone and the sum of its triangles' coefficient vectors (area-weighted
-  /// normals, the axis of its parent's cone).
-  struct NodeCone {
-    NormalCone cone;
-    Eigen::Vector3d normal_sum;
-  };
   const NodeCone& cone(int n);
   /// Condition (ii) of the theorem for a simple cycle: the cheap star-shaped test, else the
   /// general one.
@@ -168,10 +176,10 @@ class PatchCull {
   const std::vector<Eigen::Vector3d>& x1_;
   EnsureTriangle ensure_triangle_;
 
-  LazyBoxes<NodeCone> cones_;
-  CullRecord self_tests_, pair_tests_;     // the contour tests, self and pair apart (cull_record.hpp)
-  LazyBoxes<char> self_verdicts_;          // cannot_self_touch's answers, once per node
-  std::vector<DirectedEdge> union_chain_;  // scratch of cannot_touch
+  LazyBoxes<NodeCone>& cones_;
+  CullRecord self_tests_, pair_tests_;  // the contour tests, self and pair apart (cull_record.hpp)
+  LazyBoxes<char>& self_verdicts_;
+  std::vector<DirectedEdge>& union_chain_;
 };
 
 }  // namespace sscc::detail

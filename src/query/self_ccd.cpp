@@ -22,6 +22,7 @@
 #include "query/feature_hits.hpp"
 #include "query/patch_cull.hpp"
 #include "query/patch_radius.hpp"
+#include "query/step_buffers.hpp"
 #include "query/sweep.hpp"
 #include "query/task_frontier.hpp"
 #include "sscc/ccd/kernels.hpp"
@@ -164,9 +165,11 @@ class StepContext {
  public:
   /// s = max(||q_hat0||, ||q_hat1||). `every_vertex`: compute every vertex up front (the
   /// traversal will reach nearly all), else on demand; `shared`: every vertex already
-  /// computed there (the caller keeps it alive; every_vertex is then moot).
+  /// computed there (the caller keeps it alive; every_vertex is then moot). The buffers come
+  /// from `pool` and go back to it with the context.
   StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
-              const SelfCcdOptions& options, const StepCulls& culls, bool every_vertex, StepPositions* shared = nullptr)
+              const SelfCcdOptions& options, const StepCulls& culls, detail::StepBufferPool& pool, bool every_vertex,
+              StepPositions* shared = nullptr)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
@@ -176,15 +179,20 @@ class StepContext {
         separation_(options.kernel.minimum_separation),
         norm0_(q_hat0.stableNorm()),
         norm1_(q_hat1.stableNorm()),
-        own_x0_(shared ? 0 : mesh_.vertex_count()),
-        own_x1_(shared ? 0 : mesh_.vertex_count()),
-        x0_(shared ? shared->x0.data() : own_x0_.data()),
-        x1_(shared ? shared->x1.data() : own_x1_.data()),
-        computed_(mesh_.vertex_count(), shared ? 1 : 0),
-        subspace_boxes_(bvh.nodes().size()),
-        node_sweeps_(bvh.nodes().size()),
-        triangle_sweeps_(mesh_.triangle_count()),
+        buffers_(pool.lend()),
+        own_x0_(buffers_->x0),
+        own_x1_(buffers_->x1),
+        x0_(shared ? shared->x0.data() : sized(own_x0_)),
+        x1_(shared ? shared->x1.data() : sized(own_x1_)),
+        computed_(buffers_->computed),
+        subspace_boxes_(buffers_->subspace_boxes),
+        node_sweeps_(buffers_->node_sweeps),
+        triangle_sweeps_(buffers_->triangle_sweeps),
         hits_(options.mode, &stats_.kernel_calls) {
+    computed_.assign(mesh_.vertex_count(), shared ? 1 : 0);
+    subspace_boxes_.reset(bvh.nodes().size());
+    node_sweeps_.reset(bvh.nodes().size());
+    triangle_sweeps_.reset(mesh_.triangle_count());
     // One pass in vertex order streams the basis once, where computing vertices on demand
     // reads its rows in the hierarchy's order (measured on the 75k-triangle bunny without
     // certificates: a quarter of the query's time went to those reads).
@@ -210,19 +218,20 @@ class StepContext {
     const double patch_fraction =
         cones && culls.radii && q_hat0.size() > 0 ? culls.radii->patch_fraction_above(s) : 0.0;
     if (culls.boundaries && cones && cones_pay() && patch_fraction <= kLargestPatchFractionForFormedCones) {
-      patch_cull_ = std::make_unique<detail::PatchCull>(bvh, *culls.boundaries, shared ? shared->x0 : own_x0_,
-                                                        shared ? shared->x1 : own_x1_, [this](int i) {
-                                                          for (int v : mesh_.triangles()[bvh_.triangle_order()[i]])
-                                                            ensure_vertex(v);
-                                                        });
+      patch_cull_ = std::make_unique<detail::PatchCull>(
+          bvh, *culls.boundaries, shared ? shared->x0 : own_x0_, shared ? shared->x1 : own_x1_,
+          [this](int i) {
+            for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
+          },
+          buffers_->patch_cull);
     }
   }
 
   /// Given positions at both ends (the traditional query on poses the subspace does not
   /// hold): every vertex known, boxes refitted.
   StepContext(const SubspaceBvh& bvh, std::vector<Eigen::Vector3d> x0, std::vector<Eigen::Vector3d> x1,
-              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries)
-      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, StepCulls{boundaries}, false) {
+              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, detail::StepBufferPool& pool)
+      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, StepCulls{boundaries}, pool, false) {
     own_x0_ = std::move(x0);
     own_x1_ = std::move(x1);
     x0_ = own_x0_.data();
@@ -347,6 +356,12 @@ class StepContext {
     });
   }
 
+  /// x resized to the mesh's vertices, its data.
+  Eigen::Vector3d* sized(std::vector<Eigen::Vector3d>& x) const {
+    x.resize(mesh_.vertex_count());
+    return x.data();
+  }
+
   /// The sweep of the triangle at position i of the BVH's order.
   const Sweep& triangle_sweep(int i) {
     return triangle_sweeps_.get(i, [&](int k) {
@@ -441,15 +456,16 @@ class StepContext {
   double s_;
   double separation_;  // every cull widened by the kernels' minimum separation
   double norm0_, norm1_;
-  std::vector<Eigen::Vector3d> own_x0_, own_x1_;  // unless the positions are shared
+  detail::StepBufferPool::Lease buffers_;          // what the members below refer to
+  std::vector<Eigen::Vector3d>&own_x0_, &own_x1_;  // unless the positions are shared
   // The positions read: the shared ones or the own (raw pointers: the hot loops read them
   // without the vectors' indirection).
   Eigen::Vector3d* x0_;
   Eigen::Vector3d* x1_;
-  std::vector<char> computed_;
-  LazyBoxes<Aabb> subspace_boxes_;
-  LazyBoxes<Sweep> node_sweeps_;
-  LazyBoxes<Sweep> triangle_sweeps_;  // by position in the BVH's triangle order
+  std::vector<char>& computed_;
+  LazyBoxes<Aabb>& subspace_boxes_;
+  LazyBoxes<Sweep>& node_sweeps_;
+  LazyBoxes<Sweep>& triangle_sweeps_;  // by position in the BVH's triangle order
   FeatureHits<FeatureContact> hits_;
   SelfCcdStats stats_;
   const detail::PatchRadii* radii_ = nullptr;               // null: no cones bounded from the norm
@@ -703,6 +719,8 @@ class CullData {
     std::call_once(displacement_once_, [&] { displacement_ = std::make_unique<const DisplacementBounds>(*bvh_); });
     return displacement_.get();
   }
+  /// The buffers the queries' contexts lend (step_buffers.hpp).
+  StepBufferPool& buffers() { return buffers_; }
 
  private:
   void build_boundaries() {
@@ -720,6 +738,7 @@ class CullData {
   bool cones_pay_ = false;
   std::unique_ptr<const DisplacementBounds> displacement_;
   std::unique_ptr<const PatchRadii> patch_radii_;
+  StepBufferPool buffers_;
 };
 
 }  // namespace detail
@@ -792,13 +811,14 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
     // reached: computed once, a share per thread, instead of once by every thread's context.
     StepPositions positions(bvh_->model(), q_hat0, q_hat1, threads);
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, culls, far_past, &positions);
+      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, culls, culls_->buffers(), far_past,
+                                           &positions);
     };
     SelfCcdReport report = parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
     report.stats.vertices_computed += bvh_->model().mesh().vertex_count();
     return report;
   }
-  StepContext context(*bvh_, q_hat0, q_hat1, s, options, culls, far_past);
+  StepContext context(*bvh_, q_hat0, q_hat1, s, options, culls, culls_->buffers(), far_past);
   Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
   return context.finish(start);
 }
@@ -848,11 +868,11 @@ SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, c
   const int threads = detail::resolve_threads(options.threads);
   if (threads > 1) {
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, x0, x1, refit, culls_->boundaries(options));
+      return std::make_unique<StepContext>(*bvh_, x0, x1, refit, culls_->boundaries(options), culls_->buffers());
     };
     return parallel_traversal(*bvh_, nullptr, 0.0, refit, threads, make_context, start);
   }
-  StepContext context(*bvh_, x0, x1, refit, culls_->boundaries(options));
+  StepContext context(*bvh_, x0, x1, refit, culls_->boundaries(options), culls_->buffers());
   Traversal<StepContext>(*bvh_, context, nullptr, 0.0).intra(0);
   return context.finish(start);
 }
@@ -874,7 +894,7 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, StepCulls{},
-                      true);
+                      culls_->buffers(), true);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
     for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);

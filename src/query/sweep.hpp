@@ -28,7 +28,17 @@ inline Aabb box_at(const std::vector<Eigen::Vector3d>& x, const Triangle& t) { r
 template <typename Box>
 class LazyBoxes {
  public:
-  explicit LazyBoxes(std::size_t nodes) : boxes_(new Box[nodes]), known_(nodes, 0) {}
+  LazyBoxes() = default;
+  explicit LazyBoxes(std::size_t nodes) { reset(nodes); }
+  /// Every box unknown again, for `nodes` nodes: the storage is kept when large enough, so a
+  /// reused cache costs no allocation (nor the page faults of fresh memory).
+  void reset(std::size_t nodes) {
+    if (nodes > capacity_) {
+      boxes_.reset(new Box[nodes]);
+      capacity_ = nodes;
+    }
+    known_.assign(nodes, 0);
+  }
   template <typename Compute>
   const Box& get(int n, Compute compute) {
     if (!known_[n]) {
@@ -43,6 +53,7 @@ class LazyBoxes {
 
  private:
   std::unique_ptr<Box[]> boxes_;
+  std::size_t capacity_ = 0;
   std::vector<char> known_;
 };
 

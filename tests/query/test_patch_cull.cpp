@@ -170,6 +170,8 @@ TEST_CASE("normal cones: query_positions and any-hit mode agree with the unculle
 
 TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour overlaps itself is not culled",
           "[patch_cull]") {
+  // Reused across the case, as a detector reuses them across queries.
+  sscc::detail::PatchCull::Caches caches;
   const int nu = 36, nv = 3;
   const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(nu, nv, false, false);
   for (double pitch : {0.1, 0.0}) {
@@ -184,7 +186,8 @@ TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour o
       const auto n = sscc::detail::bernstein_normals(x[t[0]], x[t[1]], x[t[2]], x[t[0]], x[t[1]], x[t[2]]);
       REQUIRE(sscc::detail::certainly_positive(Vector3d(0, 0, -1), n));
     }
-    sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
+    sscc::detail::PatchCull cull(
+        bvh, boundaries, x, x, [](int) {}, caches);
     CHECK_FALSE(cull.cannot_self_touch(0));
   }
   // A short piece of the ramp (54 degrees) is a star-shaped disc in projection: culled.
@@ -195,12 +198,15 @@ TEST_CASE("normal cones: a ramp whose normals stay in a cone but whose contour o
                                   Eigen::MatrixXd::Zero(3 * x.size(), 1), Eigen::VectorXd::Ones(1));
   const sscc::SubspaceBvh bvh(model);
   const sscc::detail::NodeBoundaries boundaries(bvh);
-  sscc::detail::PatchCull cull(bvh, boundaries, x, x, [](int) {});
+  sscc::detail::PatchCull cull(
+      bvh, boundaries, x, x, [](int) {}, caches);
   CHECK(cull.cannot_self_touch(0));
 }
 
 TEST_CASE("normal cones: every node and node pair the cull accepts has no touching pair under brute force",
           "[patch_cull]") {
+  // Reused across the case, as a detector reuses them across queries.
+  sscc::detail::PatchCull::Caches caches;
   int accepted_nodes = 0, accepted_pairs = 0;
   std::vector<Keyframes> all = cases();
   // A finer fold, for nodes large enough to be tested in pairs (kSmallestUnionPart).
@@ -219,7 +225,8 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
     for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) {
       const auto x0 = model.deformed_positions(sscc::test::keyframe_q(modes, k));
       const auto x1 = model.deformed_positions(sscc::test::keyframe_q(modes, k + 1));
-      sscc::detail::PatchCull cull(bvh, boundaries, x0, x1, [](int) {});
+      sscc::detail::PatchCull cull(
+          bvh, boundaries, x0, x1, [](int) {}, caches);
       // No non-adjacent pair among the triangles at positions [begin, end) and [begin2, end2)
       // (the same range twice for a node alone) touches during the step.
       const auto no_contact = [&](int begin, int end, int begin2, int end2) {

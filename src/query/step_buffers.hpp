@@ -1,0 +1,75 @@
+// The buffers of one self-query context (vertex positions, their flags, the lazy box and cone caches),
+// kept by a detector between queries: a simulator that calls it once per step then allocates
+// none of them per step, nor touches fresh memory (whose first writes fault pages in; on the
+// default demo the queries' buffers made most of the run's page faults). Private to the
+// library.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+#include "query/patch_cull.hpp"
+#include "query/sweep.hpp"
+#include "sscc/geometry/aabb.hpp"
+
+namespace sscc::detail {
+
+struct StepBuffers {
+  std::vector<Eigen::Vector3d> x0, x1;  // the positions, unless the query shares them
+  std::vector<char> computed;           // per vertex: its positions are known
+  LazyBoxes<Aabb> subspace_boxes;
+  LazyBoxes<Sweep> node_sweeps;
+  LazyBoxes<Sweep> triangle_sweeps;  // by position in the hierarchy's triangle order
+  PatchCull::Caches patch_cull;      // the cones formed from the positions
+};
+
+/// The buffers of finished queries, lent to the next ones: as many sets as queries ever ran
+/// at once on the detector. Thread-safe (a lock per lease, a few per query).
+class StepBufferPool {
+ public:
+  /// A set of buffers, back to the pool when the lease ends. Their contents are whatever the
+  /// last query left: the context resets what it reads.
+  class Lease {
+   public:
+    Lease(StepBufferPool& pool, std::unique_ptr<StepBuffers> buffers) : pool_(&pool), buffers_(std::move(buffers)) {}
+    Lease(Lease&&) = default;
+    Lease& operator=(Lease&&) = delete;
+    ~Lease() {
+      if (buffers_) pool_->give_back(std::move(buffers_));
+    }
+    StepBuffers& operator*() const { return *buffers_; }
+    StepBuffers* operator->() const { return buffers_.get(); }
+
+   private:
+    StepBufferPool* pool_;
+    std::unique_ptr<StepBuffers> buffers_;
+  };
+
+  Lease lend() {
+    std::unique_ptr<StepBuffers> buffers;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (!free_.empty()) {
+        buffers = std::move(free_.back());
+        free_.pop_back();
+      }
+    }
+    if (!buffers) buffers = std::make_unique<StepBuffers>();
+    return {*this, std::move(buffers)};
+  }
+
+ private:
+  void give_back(std::unique_ptr<StepBuffers> buffers) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    free_.push_back(std::move(buffers));
+  }
+
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<StepBuffers>> free_;
+};
+
+}  // namespace sscc::detail
