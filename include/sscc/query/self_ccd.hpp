@@ -193,8 +193,8 @@ class SelfCcd {
   /// cones' boundary chains, patches at rest and radii, the certificates' sorted radii, the
   /// displacement bounds' rest clearances and affine fits), so that no query pays for it.
   /// Optional; thread-safe; on every thread. Without it the first query with the defaults
-  /// takes that much longer (without certificates, two threads: 0.63 s on the 15k-triangle
-  /// lion, 4.5 s on the 75k-triangle bunny; the next queries 2.4 and 7.8 ms).
+  /// takes that much longer (without certificates, two threads: 0.49 s on the 15k-triangle
+  /// lion, 3.6 s on the 75k-triangle bunny; the next queries 1.9 and 6.2 ms).
   void prepare(const SelfCcdOptions& options = {}) const;
 
   /// Whether the root's certificate alone decides the step (what query() then reports in
