@@ -97,7 +97,10 @@ class RadiusBounds {
     // Each vertex's parting rate from the chain's mean block C bounds a pair's by the
     // triangle inequality: the exact rate is needed only where that bound would lower the
     // radius.
-    Eigen::Matrix<double, 3, Eigen::Dynamic> mean = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, r_);
+    // Row-major as the basis's blocks: Eigen 3.4.0's stableNorm of a column-major 3 x Dynamic
+    // matrix fails an assertion of its own (Block.h) in builds without NDEBUG.
+    using ModeBlock = Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>;
+    ModeBlock mean = ModeBlock::Zero(3, r_);
     for (const DirectedEdge& e : chain) mean += block(e[0]);
     mean /= static_cast<double>(k);
     struct End {
@@ -105,7 +108,7 @@ class RadiusBounds {
       double magnitude, from_mean;  // largest |coordinate|; ||U_hat_v - C||_F (bounds the projected rate)
     };
     const auto end_of = [&](int v) {
-      const Eigen::Matrix<double, 3, Eigen::Dynamic> difference = block(v) - mean;
+      const ModeBlock difference = block(v) - mean;
       return End{rest_[v] - rest_[v].dot(d) * d, rest_[v].cwiseAbs().maxCoeff(), difference.stableNorm() * kUp};
     };
     std::vector<End> starts(k), ends(k);

@@ -1,0 +1,230 @@
+// A detector lends each query the buffers (positions, their flags, the box and cone caches)
+// of a finished one (step_buffers.hpp). Whatever ran before on the detector, a query reports
+// what the same query reports on a fresh detector: steps of very different norms, with and
+// without certificates, every query kind, one thread and several, in turn and from two
+// threads at once. One-thread queries match the fresh ones' counters too (a box, cone,
+// verdict or position left known by an earlier step would change them even when the contacts
+// happened to agree).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include "certificates/certificate_fixtures.hpp"
+#include "sscc/query/self_ccd.hpp"
+#include "support/parametric_meshes.hpp"
+
+namespace {
+
+using Eigen::Vector3d;
+
+struct Step {
+  Eigen::VectorXd q0, q1;
+  std::vector<Vector3d> x0, x1;  // the positions at both ends, for query_positions
+};
+
+/// One query kind with its options. `serial`: on one thread, whose counters are deterministic.
+struct Call {
+  std::string name;
+  bool serial;
+  std::function<sscc::SelfCcdReport(const sscc::SelfCcd&, const Step&)> run;
+};
+
+sscc::SelfCcdOptions on_threads(int threads, sscc::SelfCcdMode mode = sscc::SelfCcdMode::kAllContacts) {
+  sscc::SelfCcdOptions options;
+  options.threads = threads;
+  options.mode = mode;
+  return options;
+}
+
+/// Every kind of context a detector lends buffers to: query with certificates (lazy vertices
+/// near the root's radius) and without (the cones and the displacement bounds), on one
+/// thread and on several (shared positions), the traditional query on subspace boxes,
+/// query_positions, query_exhaustive.
+std::vector<Call> calls() {
+  std::vector<Call> all;
+  const auto query = [](sscc::SelfCcdOptions options) {
+    return [options](const sscc::SelfCcd& ccd, const Step& s) { return ccd.query(s.q0, s.q1, options); };
+  };
+  all.push_back({"defaults, 1 thread", true, query(on_threads(1))});
+  all.push_back({"defaults, 3 threads", false, query(on_threads(3))});
+  sscc::SelfCcdOptions uncertified = on_threads(1, sscc::SelfCcdMode::kEarliest);
+  uncertified.use_certificates = false;
+  all.push_back({"cones and bounds, earliest, 1 thread", true, query(uncertified)});
+  uncertified.threads = 2;
+  uncertified.mode = sscc::SelfCcdMode::kAllContacts;
+  all.push_back({"cones and bounds, 2 threads", false, query(uncertified)});
+  sscc::SelfCcdOptions cones = on_threads(1);
+  sscc::set_traditional(cones);
+  cones.use_normal_cones = true;
+  cones.bounds = sscc::NodeBounds::kRefit;
+  all.push_back({"cones on refitted boxes, 1 thread", true, query(cones)});
+  sscc::SelfCcdOptions subspace = on_threads(2, sscc::SelfCcdMode::kAnyHit);
+  sscc::set_traditional(subspace);
+  subspace.bounds = sscc::NodeBounds::kSubspace;
+  all.push_back({"traditional on subspace boxes, any hit, 2 threads", false, query(subspace)});
+  const auto positions = [](sscc::SelfCcdOptions options) {
+    return [options](const sscc::SelfCcd& ccd, const Step& s) { return ccd.query_positions(s.x0, s.x1, options); };
+  };
+  all.push_back({"positions with cones, 1 thread", true, positions(on_threads(1))});
+  all.push_back({"positions, earliest, 2 threads", false, positions(on_threads(2, sscc::SelfCcdMode::kEarliest))});
+  all.push_back(
+      {"exhaustive", true, [](const sscc::SelfCcd& ccd, const Step& s) { return ccd.query_exhaustive(s.q0, s.q1); }});
+  return all;
+}
+
+void require_same_report(const sscc::SelfCcdReport& reused, const sscc::SelfCcdReport& fresh, bool serial) {
+  REQUIRE(reused.pairs == fresh.pairs);
+  REQUIRE(reused.features == fresh.features);
+  REQUIRE(reused.earliest_toi == fresh.earliest_toi);
+  REQUIRE(reused.stats.root_certified == fresh.stats.root_certified);
+  if (!serial) return;  // the threads' shares, hence their counters, vary from run to run
+  REQUIRE(reused.stats.nodes_visited == fresh.stats.nodes_visited);
+  REQUIRE(reused.stats.box_tests == fresh.stats.box_tests);
+  REQUIRE(reused.stats.triangle_pairs == fresh.stats.triangle_pairs);
+  REQUIRE(reused.stats.kernel_calls == fresh.stats.kernel_calls);
+  REQUIRE(reused.stats.vertices_computed == fresh.stats.vertices_computed);
+  REQUIRE(reused.stats.certified == fresh.stats.certified);
+  REQUIRE(reused.stats.cone_culled == fresh.stats.cone_culled);
+  REQUIRE(reused.stats.cone_radius_culled == fresh.stats.cone_radius_culled);
+  REQUIRE(reused.stats.displacement_culled == fresh.stats.displacement_culled);
+}
+
+/// What the culls did over a run, so that the test shows the caches were exercised.
+struct Tally {
+  long radius_culled = 0, formed_cone_culled = 0, displacement_culled = 0, certified = 0;
+  int colliding = 0, clear = 0;
+  void add(const sscc::SelfCcdReport& report) {
+    radius_culled += report.stats.cone_radius_culled;
+    formed_cone_culled += report.stats.cone_culled - report.stats.cone_radius_culled;
+    displacement_culled += report.stats.displacement_culled;
+    certified += report.stats.certified;
+    (report.collided() ? colliding : clear) += 1;
+  }
+};
+
+/// Runs every call on every step on `reused`, each call kind after every other (the order
+/// rotates with the step), against a fresh detector per call; then the same calls from two
+/// threads at once, one on `reused` and one on a copy of it (copies share the buffers), each
+/// in its own order, against the fresh reports.
+Tally check_reuse(const sscc::SelfCcd& reused, const std::vector<Step>& steps) {
+  const std::vector<Call> kinds = calls();
+  const int count = static_cast<int>(kinds.size());
+  const auto fresh_detector = [&] {
+    return sscc::SelfCcd(
+        std::make_shared<const sscc::SubspaceBvh>(reused.bvh()),
+        reused.certificates() ? std::make_shared<const sscc::Certificates>(*reused.certificates()) : nullptr);
+  };
+  Tally tally;
+  std::vector<std::vector<sscc::SelfCcdReport>> fresh(steps.size(), std::vector<sscc::SelfCcdReport>(kinds.size()));
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    for (int k = 0; k < count; ++k) {
+      const int c = (k + static_cast<int>(i)) % count;
+      const Call& call = kinds[c];
+      INFO("step " << i << ", " << call.name);
+      fresh[i][c] = call.run(fresh_detector(), steps[i]);
+      const sscc::SelfCcdReport report = call.run(reused, steps[i]);
+      require_same_report(report, fresh[i][c], call.serial);
+      tally.add(report);
+    }
+    // A rejected query in between: it throws before borrowing anything.
+    REQUIRE_THROWS_AS(reused.query_positions(steps[i].x0, {}, on_threads(1)), std::invalid_argument);
+  }
+  const sscc::SelfCcd copy = reused;
+  std::vector<std::vector<sscc::SelfCcdReport>> first(steps.size(), std::vector<sscc::SelfCcdReport>(kinds.size()));
+  std::vector<std::vector<sscc::SelfCcdReport>> second = first;
+  const auto worker = [&](const sscc::SelfCcd& ccd, std::vector<std::vector<sscc::SelfCcdReport>>& out, int stride) {
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      for (int k = 0; k < count; ++k) {
+        const int c = (stride * k + static_cast<int>(i)) % count;
+        out[i][c] = kinds[c].run(ccd, steps[i]);
+      }
+    }
+  };
+  // Strides 1 and 2 (count is odd: both visit every kind) put different kinds side by side.
+  REQUIRE(count % 2 == 1);
+  std::thread other(worker, std::cref(copy), std::ref(second), 2);
+  worker(reused, first, 1);
+  other.join();
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    for (int c = 0; c < count; ++c) {
+      INFO("concurrent, step " << i << ", " << kinds[c].name);
+      require_same_report(first[i][c], fresh[i][c], kinds[c].serial);
+      require_same_report(second[i][c], fresh[i][c], kinds[c].serial);
+    }
+  }
+  return tally;
+}
+
+Step step_of(const sscc::SubspaceModel& model, Eigen::VectorXd q0, Eigen::VectorXd q1) {
+  Step s{std::move(q0), std::move(q1), {}, {}};
+  s.x0 = model.deformed_positions(s.q0);
+  s.x1 = model.deformed_positions(s.q1);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "query buffers: a certified sphere's steps from inside the root's radius to far past it (certificates, "
+    "formed cones), any order",
+    "[query][parallel]") {
+  const auto sphere = sscc::test::certified_sphere();
+  const sscc::SelfCcd ccd(sphere->bvh, sphere->certificates);
+  const double root = sphere->certificates.node_radius(0);
+  std::mt19937_64 rng(41);
+  std::vector<Step> steps;
+  // Mixed so that each step follows one of a very different norm: the caches of a step that
+  // collides before one that does not, lazy vertices (near the root) after shared ones.
+  for (double factor : {20.0, 1.5, 0.5, 8.0, 1.2, 40.0, 3.0, 1.8}) {
+    const Eigen::VectorXd q0 = sscc::test::random_scaled_coordinates(rng, 27, factor * root);
+    const Eigen::VectorXd q1 = sscc::test::random_scaled_coordinates(rng, 27, factor * root);
+    steps.push_back(step_of(sphere->model, q0, q1));
+  }
+  const Tally tally = check_reuse(ccd, steps);
+  CHECK(tally.colliding >= 10);
+  CHECK(tally.clear >= 10);
+  CHECK(tally.certified > 0);
+  CHECK(tally.formed_cone_culled > 0);
+}
+
+TEST_CASE("query buffers: a pinched torus's keyframes (displacement bounds, the cones' radii), any order",
+          "[query][parallel]") {
+  // The torus of test_patch_cull.cpp (radii 1 and 0.3) pinched around u = 0 by `pinch` (1: shut).
+  const auto pinched = [](double pinch) -> sscc::test::Surface {
+    return [pinch](double u, double v) {
+      const double phi = 2 * M_PI * u, theta = 2 * M_PI * v;
+      const double wrapped = std::remainder(phi, 2 * M_PI);
+      const double r = 0.3 * (1.0 - pinch * std::exp(-(wrapped * wrapped) / 0.15));
+      return Vector3d((1 + r * std::cos(theta)) * std::cos(phi), (1 + r * std::cos(theta)) * std::sin(phi),
+                      r * std::sin(theta));
+    };
+  };
+  std::vector<std::vector<Vector3d>> frames;
+  for (double pinch : {0.0, 0.6, 0.95, 1.0, 1.05}) {
+    frames.push_back(sscc::test::grid_positions(40, 10, true, true, pinched(pinch)));
+  }
+  const sscc::SubspaceModel model = sscc::test::keyframe_model(sscc::test::grid_triangles(40, 10, true, true), frames);
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd ccd(bvh, sscc::Certificates::precompute(bvh));
+  const int modes = model.mode_count();
+  std::vector<Step> steps;
+  // Shut, open, small and large steps in turn, two scaled down.
+  for (const auto& [from, to, scale] : std::vector<std::tuple<int, int, double>>{
+           {3, 4, 1.0}, {0, 1, 1.0}, {0, 4, 1.0}, {1, 2, 1.0}, {0, 3, 1.0}, {0, 2, 0.05}, {2, 3, 1.0}, {0, 1, 0.01}}) {
+    steps.push_back(
+        step_of(model, scale * sscc::test::keyframe_q(modes, from), scale * sscc::test::keyframe_q(modes, to)));
+  }
+  const Tally tally = check_reuse(ccd, steps);
+  CHECK(tally.colliding >= 10);
+  CHECK(tally.clear >= 10);
+  CHECK(tally.displacement_culled > 0);
+  CHECK(tally.radius_culled > 0);
+}
