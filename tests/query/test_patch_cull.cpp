@@ -34,17 +34,6 @@ Surface folded_sheet(double angle) {
   };
 }
 
-/// A torus (radii 1 and 0.3) whose tube is pinched around u = 0 by `pinch` (1: shut).
-Surface pinched_torus(double pinch) {
-  return [pinch](double u, double v) {
-    const double phi = 2 * M_PI * u, theta = 2 * M_PI * v;
-    const double wrapped = std::remainder(phi, 2 * M_PI);
-    const double r = 0.3 * (1.0 - pinch * std::exp(-(wrapped * wrapped) / 0.15));
-    return Vector3d((1 + r * std::cos(theta)) * std::cos(phi), (1 + r * std::cos(theta)) * std::sin(phi),
-                    r * std::sin(theta));
-  };
-}
-
 /// A ramp winding 1.5 turns about z (radii 0.5 to 1), rising `pitch` per turn: its normals
 /// stay near the z axis while its projection covers part of the annulus twice.
 Surface spiral_ramp(double pitch) {
@@ -60,7 +49,7 @@ std::vector<Keyframes> cases() {
   for (double degrees : {0.0, 45.0, 100.0, 150.0, 175.0, 180.0, 185.0})
     all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
   all.push_back({"pinched torus", 40, 10, true, true, {}});
-  for (double pinch : {0.0, 0.6, 0.95, 1.0, 1.05}) all.back().shapes.push_back(pinched_torus(pinch));
+  for (double pinch : {0.0, 0.6, 0.95, 1.0, 1.05}) all.back().shapes.push_back(sscc::test::pinched_torus(pinch));
   all.push_back({"helix tube", 60, 8, false, true, {}});
   for (double pitch : {0.5, 0.3, 0.21, 0.2, 0.19}) all.back().shapes.push_back(sscc::test::helix_tube(pitch));
   all.push_back({"spiral ramp", 36, 3, false, false, {}});
@@ -274,8 +263,9 @@ TEST_CASE("normal cones: not used on a mesh whose patches at rest are small, use
     Keyframes frames;
     bool expect_cones;
   };
-  const std::vector<Case> all = {{{"coarse torus", 12, 4, true, true, {pinched_torus(0.0), pinched_torus(0.3)}}, false},
-                                 {{"sheet", 16, 5, false, false, {folded_sheet(0.0), folded_sheet(0.5)}}, true}};
+  const std::vector<Case> all = {
+      {{"coarse torus", 12, 4, true, true, {sscc::test::pinched_torus(0.0), sscc::test::pinched_torus(0.3)}}, false},
+      {{"sheet", 16, 5, false, false, {folded_sheet(0.0), folded_sheet(0.5)}}, true}};
   for (const Case& c : all) {
     const Keyframes& k = c.frames;
     std::vector<std::vector<Vector3d>> frames;

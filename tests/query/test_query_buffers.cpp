@@ -197,19 +197,9 @@ TEST_CASE(
 
 TEST_CASE("query buffers: a pinched torus's keyframes (displacement bounds, the cones' radii), any order",
           "[query][parallel]") {
-  // The torus of test_patch_cull.cpp (radii 1 and 0.3) pinched around u = 0 by `pinch` (1: shut).
-  const auto pinched = [](double pinch) -> sscc::test::Surface {
-    return [pinch](double u, double v) {
-      const double phi = 2 * M_PI * u, theta = 2 * M_PI * v;
-      const double wrapped = std::remainder(phi, 2 * M_PI);
-      const double r = 0.3 * (1.0 - pinch * std::exp(-(wrapped * wrapped) / 0.15));
-      return Vector3d((1 + r * std::cos(theta)) * std::cos(phi), (1 + r * std::cos(theta)) * std::sin(phi),
-                      r * std::sin(theta));
-    };
-  };
   std::vector<std::vector<Vector3d>> frames;
   for (double pinch : {0.0, 0.6, 0.95, 1.0, 1.05}) {
-    frames.push_back(sscc::test::grid_positions(40, 10, true, true, pinched(pinch)));
+    frames.push_back(sscc::test::grid_positions(40, 10, true, true, sscc::test::pinched_torus(pinch)));
   }
   const sscc::SubspaceModel model = sscc::test::keyframe_model(sscc::test::grid_triangles(40, 10, true, true), frames);
   const sscc::SubspaceBvh bvh(model);

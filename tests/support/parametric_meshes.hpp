@@ -33,6 +33,17 @@ inline Surface helix_tube(double pitch) {
   };
 }
 
+/// A torus (radii 1 and 0.3) whose tube is pinched around u = 0 by `pinch` (1: shut).
+inline Surface pinched_torus(double pinch) {
+  return [pinch](double u, double v) {
+    const double phi = 2 * M_PI * u, theta = 2 * M_PI * v;
+    const double wrapped = std::remainder(phi, 2 * M_PI);
+    const double r = 0.3 * (1.0 - pinch * std::exp(-(wrapped * wrapped) / 0.15));
+    return Eigen::Vector3d((1 + r * std::cos(theta)) * std::cos(phi), (1 + r * std::cos(theta)) * std::sin(phi),
+                           r * std::sin(theta));
+  };
+}
+
 /// Vertex positions of an nu x nv grid on `surface`; a wrapped direction has no duplicate
 /// last row (u = 1 is u = 0).
 inline std::vector<Eigen::Vector3d> grid_positions(int nu, int nv, bool wrap_u, bool wrap_v, const Surface& surface) {
