@@ -229,11 +229,11 @@ class StepContext {
 
   /// Given positions at both ends (the traditional query on poses the subspace does not
   /// hold): every vertex known, boxes refitted.
-  StepContext(const SubspaceBvh& bvh, std::vector<Eigen::Vector3d> x0, std::vector<Eigen::Vector3d> x1,
+  StepContext(const SubspaceBvh& bvh, const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
               const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, detail::StepBufferPool& pool)
       : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, StepCulls{boundaries}, pool, false) {
-    own_x0_ = std::move(x0);
-    own_x1_ = std::move(x1);
+    own_x0_.assign(x0.begin(), x0.end());  // into the lent buffers' storage
+    own_x1_.assign(x1.begin(), x1.end());
     x0_ = own_x0_.data();
     x1_ = own_x1_.data();
     std::fill(computed_.begin(), computed_.end(), 1);

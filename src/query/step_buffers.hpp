@@ -63,9 +63,14 @@ class StepBufferPool {
   }
 
  private:
-  void give_back(std::unique_ptr<StepBuffers> buffers) {
+  /// Called by a lease's destructor, so it must not throw: a set the list has no room for
+  /// (out of memory) is freed instead.
+  void give_back(std::unique_ptr<StepBuffers> buffers) noexcept {
     const std::lock_guard<std::mutex> lock(mutex_);
-    free_.push_back(std::move(buffers));
+    try {
+      free_.push_back(std::move(buffers));
+    } catch (...) {
+    }
   }
 
   std::mutex mutex_;
