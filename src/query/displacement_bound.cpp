@@ -9,6 +9,7 @@
 #include <limits>
 #include <utility>
 
+#include "common/scaled_norm.hpp"
 #include "sscc/geometry/triangle_distance.hpp"
 
 namespace sscc::detail {
@@ -177,7 +178,8 @@ void fit_affine(const SubspaceModel& model, const std::vector<int>& vertices, do
       residual = std::max(residual, left.stableNorm());
       largest = std::max(largest, displacement(v, j).stableNorm());
     }
-    const double magnitude = largest + mean.stableNorm() + map.norm() * (farthest + centre.stableNorm());
+    const double magnitude = largest + mean.stableNorm() +
+                             scaled_norm(9, [&](int k) { return map.data()[k]; }) * (farthest + centre.stableNorm());
     residuals[j] = residual * kSumSlack + 16.0 * kRoundoff * magnitude + kUnderflowAllowance;
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) maps[(3 * a + b) * r + j] = map(a, b);

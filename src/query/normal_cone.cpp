@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/scaled_norm.hpp"
+
 namespace sscc::detail {
 
 namespace {
@@ -69,37 +71,51 @@ namespace sscc::detail {
 
 namespace {
 
+/// Coefficients whose angle to the axis has a tangent above this (within 2^-900 radians of
+/// perpendicular) give no cone: such a cone would not fit in a half-space anyway, and the
+/// tangent's quotient stays finite below it (the test scales `across` down by a power of two,
+/// which cannot overflow).
+constexpr double kSteepestTangent = 0x1p900;
+
+/// |v| without the underflow or overflow of a plain sum of squares (common/scaled_norm.hpp):
+/// coefficient vectors of triangles with coordinates near 1e-80 have entries whose squares
+/// vanish, and a cone's widths and error bounds computed from them came out too narrow.
+double length(const Eigen::Vector3d& v) { return length3(v.x(), v.y(), v.z()); }
+
 bool normalised(const Eigen::Vector3d& v, Eigen::Vector3d& out) {
-  const double length = v.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) return false;
-  out = v / length;
+  const double size = length(v);
+  if (!(size > 0.0) || !std::isfinite(size)) return false;
+  out = v / size;
   return true;
 }
 
 }  // namespace
 
 double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b));
+  return std::atan2(length(a.cross(b)), a.dot(b));
 }
 
 NormalCone cone_of(const Eigen::Vector3d& axis, const BernsteinNormals* begin, const BernsteinNormals* end) {
   // For an exact N within |E| of the computed one, |d x N| <= |d x N_c| + |E| and
   // d . N >= d . N_c - |E| (|d| = 1), so while the latter is positive the angle between d and
-  // N is at most atan2(|d x N_c| + |E|, d . N_c - |E|). The largest such angle is kept by its
-  // tangent (a monotone choice: a rounding slip picks an angle within an ulp of the largest).
+  // N is at most atan(tangent), tangent = (|d x N_c| + |E|) / (d . N_c - |E|). The largest
+  // tangent is kept (one rounding each: an angle within an ulp of the largest). A quotient,
+  // not products of the two sides: those of coefficients near 1e-160 underflow to 0 and
+  // compared nothing.
   NormalCone cone;
   if (!normalised(axis, cone.axis)) return cone;
-  double widest_across = 0.0, widest_along = 1.0;
+  double widest = 0.0;
   for (const BernsteinNormals* n = begin; n != end; ++n) {
     for (int k = 0; k < 3; ++k) {
-      const double error = n->error[k].norm();
+      const double error = length(n->error[k]);
       const double along = cone.axis.dot(n->value[k]) - error;
-      const double across = cone.axis.cross(n->value[k]).norm() + error;
-      if (!(along > 0.0)) return cone;  // NaN fails too
-      if (across * widest_along > widest_across * along) widest_across = across, widest_along = along;
+      const double across = length(cone.axis.cross(n->value[k])) + error;
+      // NaN fails too; so does a tangent above kSteepestTangent (the quotient stays finite).
+      if (!(along > 0.0) || !(along > across * (1.0 / kSteepestTangent))) return cone;
+      widest = std::max(widest, across / along);
     }
   }
-  cone.half_angle = std::atan2(widest_across, widest_along) + kAngleSlack;
+  cone.half_angle = std::atan(widest) + kAngleSlack;
   return cone;
 }
 

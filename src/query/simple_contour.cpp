@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "common/scaled_norm.hpp"
 #include "query/normal_cone.hpp"
 
 namespace sscc::detail {
@@ -78,8 +79,10 @@ bool stays_simple_in_projection(const Vector3d& d, const std::vector<DirectedEdg
     lo = lo.cwiseMin(x0[e[0]]).cwiseMin(x1[e[0]]);
     hi = hi.cwiseMax(x0[e[0]]).cwiseMax(x1[e[0]]);
   }
-  // The diagonal, rounded up by a margin far above its few roundings.
-  const double extent = (hi - lo).norm() * (1.0 + 1e-12);
+  // The diagonal, rounded up by a margin far above its few roundings (without the underflow of
+  // a plain sum of squares: at coordinates near 1e-160 it would vanish, and the pads with it).
+  const Vector3d diagonal = hi - lo;
+  const double extent = length3(diagonal.x(), diagonal.y(), diagonal.z()) * (1.0 + 1e-12);
   if (!std::isfinite(extent)) return false;
   const ProjectionFrame frame(d, extent);
 
