@@ -39,12 +39,13 @@ class LazyBoxes {
     }
     known_.assign(nodes, 0);
   }
+  /// Node n's value, computed by compute(n) on first use. The check inlines and the
+  /// computation stays out of line: the traversal asks again for most boxes it has (measured
+  /// with callgrind on the lion's cones query: a call's register saves cost more than the
+  /// check).
   template <typename Compute>
   const Box& get(int n, Compute compute) {
-    if (!known_[n]) {
-      boxes_[n] = compute(n);
-      known_[n] = 1;
-    }
+    if (!known_[n]) fill(n, compute);
     return boxes_[n];
   }
   bool known(int n) const { return known_[n] != 0; }
@@ -52,6 +53,12 @@ class LazyBoxes {
   const Box& value(int n) const { return boxes_[n]; }
 
  private:
+  template <typename Compute>
+  [[gnu::noinline]] void fill(int n, Compute& compute) {
+    boxes_[n] = compute(n);
+    known_[n] = 1;
+  }
+
   std::unique_ptr<Box[]> boxes_;
   std::size_t capacity_ = 0;
   std::vector<char> known_;
