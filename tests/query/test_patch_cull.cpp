@@ -294,3 +294,67 @@ TEST_CASE("normal cones: not used on a mesh whose patches at rest are small, use
     CHECK((positions.stats.cone_culled > 0) == c.expect_cones);
   }
 }
+
+TEST_CASE("normal cones: formed from positions times powers of two, they report exactly what exhaustive testing does",
+          "[patch_cull][query]") {
+  // Scaling every position by a power of two is exact, and the kernels decide contact
+  // exactly at any finite magnitude: the same pairs must come out at every scale. At 2^-280
+  // and 2^-400 the normals' coefficients (products of two coordinates) are near 1e-170 and
+  // 1e-242, their squares subnormal or 0; at 2^250 they are near 1e148, their squares near
+  // the largest double, and at 2^300 near 1e178, their squares infinite. At 2^-500 they fall
+  // near 1e-302, below the certified signs' absolute allowance (kUnderflowAllowance): the
+  // cones refuse every patch there, which only loses culls. The meshes whose patches the
+  // cones cull at scale 1 (the tests above): the folding sheet and the spiral ramp. The
+  // exhaustive reference uses no cull (query_exhaustive), only the kernels.
+  const std::vector<double> scales{0x1p-280, 0x1p-400, 0x1p-500, 0x1p250, 0x1p300};
+  std::vector<long> culled(scales.size(), 0);
+  for (const Keyframes& c : cases()) {
+    if (c.name != "folding sheet" && c.name != "spiral ramp") continue;
+    std::vector<std::vector<Vector3d>> frames;
+    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+    const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v);
+    const sscc::SubspaceModel model = sscc::test::keyframe_model(triangles, frames);
+    const sscc::SelfCcd ccd{sscc::SubspaceBvh(model)};
+    const int modes = model.mode_count();
+    std::vector<sscc::SubspaceModel> scaled_models;
+    std::vector<sscc::SelfCcd> scaled_ccds;
+    for (double scale : scales) {
+      std::vector<std::vector<Vector3d>> scaled_frames = frames;
+      for (auto& frame : scaled_frames) {
+        for (Vector3d& p : frame) p *= scale;
+      }
+      scaled_models.push_back(sscc::test::keyframe_model(triangles, scaled_frames));
+      scaled_ccds.emplace_back(sscc::SubspaceBvh(scaled_models.back()));
+    }
+    // Every pair of keyframes, forward: up to the whole fold in one step.
+    for (int from = 0; from < static_cast<int>(frames.size()); ++from) {
+      for (int to = from + 1; to < static_cast<int>(frames.size()); ++to) {
+        const Eigen::VectorXd q0 = sscc::test::keyframe_q(modes, from), q1 = sscc::test::keyframe_q(modes, to);
+        const std::vector<Vector3d> unscaled0 = model.deformed_positions(q0);
+        const auto unscaled_pairs = pairs_of(ccd.query_exhaustive(q0, q1));
+        for (std::size_t i = 0; i < scales.size(); ++i) {
+          INFO(c.name << ": keyframe " << from << " to " << to << ", positions times " << scales[i]);
+          const std::vector<Vector3d> x0 = scaled_models[i].deformed_positions(q0);
+          const std::vector<Vector3d> x1 = scaled_models[i].deformed_positions(q1);
+          // The scaled model's positions are the unscaled ones times the scale, exactly.
+          for (std::size_t v = 0; v < x0.size(); ++v) REQUIRE(x0[v] == scales[i] * unscaled0[v]);
+          sscc::SelfCcdOptions cones;  // the cones alone, formed from the positions
+          sscc::set_traditional(cones);
+          cones.use_normal_cones = true;
+          cones.threads = 1;
+          const sscc::SelfCcdReport with_cones = scaled_ccds[i].query_positions(x0, x1, cones);
+          const sscc::SelfCcdReport exhaustive = scaled_ccds[i].query_exhaustive(q0, q1);
+          REQUIRE(with_cones.pairs == exhaustive.pairs);
+          REQUIRE(with_cones.features == exhaustive.features);
+          REQUIRE(pairs_of(with_cones) == unscaled_pairs);  // the same triangle pairs as at scale 1
+          culled[i] += with_cones.stats.cone_culled;
+        }
+      }
+    }
+  }
+  // Not vacuous: the cones cull wherever the coefficients stay above the allowance.
+  for (std::size_t i = 0; i < scales.size(); ++i) {
+    INFO("positions times " << scales[i]);
+    if (scales[i] != 0x1p-500) CHECK(culled[i] > 50);
+  }
+}
