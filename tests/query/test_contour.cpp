@@ -221,9 +221,16 @@ TEST_CASE("contour: a loop winding twice, a reversed loop or a non-star loop is 
 }
 
 TEST_CASE("contour: the star-shaped test against exact arithmetic on moving loops", "[contour]") {
+  // Also with the positions times powers of two (exact: the mean c scales exactly too, and the
+  // exact answer does not change): at 2^-280 and 2^-400 the products in the predicates are
+  // near 1e-169 and 1e-241, their squares subnormal or 0; at 2^300 near 1e180, their squares
+  // infinite. At 2^-500 the products fall near 1e-301, below the certified signs' absolute
+  // allowance: refusals there only lose culls.
+  const std::vector<double> scales{0x1p-280, 0x1p-400, 0x1p-500, 0x1p250, 0x1p300};
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   int accepted = 0, refused = 0;
+  std::vector<int> accepted_scaled(scales.size(), 0);
   for (int trial = 0; trial < 600; ++trial) {
     const int n = 5 + trial % 13;
     const std::vector<Vector3d> x0 = loop(n, 1 + (trial % 7 == 0), 0.0, rng);
@@ -231,14 +238,26 @@ TEST_CASE("contour: the star-shaped test against exact arithmetic on moving loop
     const double motion = trial % 3 == 0 ? 1.5 : 0.4;  // large motions fold some edges over
     for (Vector3d& p : x1) p += motion * Vector3d(unit(rng), unit(rng), unit(rng));
     const bool passes = sscc::detail::winds_once_star_shaped(Vector3d(0, 0, 1), cycle(n), x0, x1);
-    INFO("trial " << trial);
-    if (passes) {
-      ++accepted;
-      for (int k = 0; k <= 32; ++k) REQUIRE(exactly_star_shaped_once(cycle(n), x0, x1, mpq_class(k, 32)));
-    } else {
-      ++refused;
+    bool passes_scaled = false;
+    for (std::size_t i = 0; i < scales.size(); ++i) {
+      std::vector<Vector3d> y0 = x0, y1 = x1;
+      for (Vector3d& p : y0) p *= scales[i];
+      for (Vector3d& p : y1) p *= scales[i];
+      const bool scaled = sscc::detail::winds_once_star_shaped(Vector3d(0, 0, 1), cycle(n), y0, y1);
+      accepted_scaled[i] += scaled;
+      passes_scaled = passes_scaled || scaled;
     }
+    INFO("trial " << trial);
+    if (passes || passes_scaled) {
+      // The exact answer is the same at every scale: checked on the unscaled positions.
+      for (int k = 0; k <= 32; ++k) REQUIRE(exactly_star_shaped_once(cycle(n), x0, x1, mpq_class(k, 32)));
+    }
+    (passes ? accepted : refused) += 1;
   }
   CHECK(accepted > 100);
   CHECK(refused > 100);
+  for (std::size_t i = 0; i < scales.size(); ++i) {
+    INFO("positions times " << scales[i] << ": " << accepted_scaled[i] << " accepted of " << accepted);
+    if (scales[i] != 0x1p-500) CHECK(accepted_scaled[i] == accepted);
+  }
 }

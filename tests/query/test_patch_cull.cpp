@@ -255,6 +255,112 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
   CHECK(accepted_pairs >= 3);  // parts of 32 to 64 triangles (patch_cull.hpp): few in these meshes
 }
 
+TEST_CASE(
+    "normal cones: with positions times powers of two the cull accepts no node or node pair it refuses at scale 1 "
+    "unless brute force finds it free of contact",
+    "[patch_cull]") {
+  // Scaling by a power of two is exact and changes no contact: away from the absolute
+  // allowance (kUnderflowAllowance) the verdicts should be those of scale 1, which the test
+  // above holds against brute force on the same steps. A node or pair accepted only at some
+  // scale is held against brute force at that scale (norms or products that underflow or
+  // overflow would show as such acceptances, or as traps). 2^-450 and 2^450 put the
+  // coefficients' entries near 2^-900 and 2^900, where length3 (common/scaled_norm.hpp)
+  // changes method; at 2^-500 most coefficients fall below the allowance.
+  const std::vector<double> scales{0x1p-280, 0x1p-400, 0x1p-450, 0x1p-500, 0x1p250, 0x1p300, 0x1p450};
+  sscc::detail::PatchCull::Caches caches, scaled_caches;
+  std::vector<Keyframes> all = cases();
+  all.push_back({"fine folding sheet", 64, 16, false, false, {}});
+  for (double degrees : {0.0, 60.0, 120.0, 179.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  long unscaled_nodes = 0, unscaled_pairs = 0;
+  std::vector<long> scaled_nodes(scales.size(), 0), scaled_pairs(scales.size(), 0), only_scaled(scales.size(), 0);
+  for (const Keyframes& c : all) {
+    std::vector<std::vector<Vector3d>> frames;
+    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+    const sscc::SubspaceModel model =
+        sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
+    const sscc::SubspaceBvh bvh(model);
+    const sscc::detail::NodeBoundaries boundaries(bvh);
+    const sscc::TriangleMesh& mesh = model.mesh();
+    const auto& nodes = bvh.nodes();
+    const int modes = model.mode_count();
+    for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) {
+      const auto x0 = model.deformed_positions(sscc::test::keyframe_q(modes, k));
+      const auto x1 = model.deformed_positions(sscc::test::keyframe_q(modes, k + 1));
+      sscc::detail::PatchCull cull(
+          bvh, boundaries, x0, x1, [](int) {}, caches);
+      std::vector<char> node_verdicts;
+      std::vector<std::array<int, 2>> pairs;
+      std::vector<char> pair_verdicts;
+      for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+        node_verdicts.push_back(cull.cannot_self_touch(n));
+        unscaled_nodes += node_verdicts.back();
+      }
+      for (int a = 0; a < static_cast<int>(nodes.size()); ++a) {
+        for (int b = a + 1; b < static_cast<int>(nodes.size()); ++b) {
+          if (nodes[a].triangle_end > nodes[b].triangle_begin && nodes[b].triangle_end > nodes[a].triangle_begin)
+            continue;
+          pairs.push_back({a, b});
+          pair_verdicts.push_back(cull.cannot_touch(a, b));
+          unscaled_pairs += pair_verdicts.back();
+        }
+      }
+      for (std::size_t i = 0; i < scales.size(); ++i) {
+        INFO(c.name << ": keyframe " << k << " to " << k + 1 << ", positions times " << scales[i]);
+        std::vector<Vector3d> y0 = x0, y1 = x1;
+        for (Vector3d& p : y0) p *= scales[i];
+        for (Vector3d& p : y1) p *= scales[i];
+        sscc::detail::PatchCull scaled(
+            bvh, boundaries, y0, y1, [](int) {}, scaled_caches);
+        // No non-adjacent pair among the triangles at positions [begin, end) and [begin2, end2)
+        // touches during the scaled step.
+        const auto no_contact = [&](int begin, int end, int begin2, int end2) {
+          for (int p = begin; p < end; ++p) {
+            for (int q = std::max(begin2, begin == begin2 ? p + 1 : begin2); q < end2; ++q) {
+              const int a = bvh.triangle_order()[p], b = bvh.triangle_order()[q];
+              if (mesh.adjacent(a, b)) continue;
+              if (sscc::validation::triangle_pair_first_contact(y0, y1, mesh.triangles()[a], mesh.triangles()[b]) <=
+                  1.0) {
+                return false;
+              }
+            }
+          }
+          return true;
+        };
+        for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+          if (!scaled.cannot_self_touch(n)) continue;
+          ++scaled_nodes[i];
+          if (node_verdicts[n]) continue;
+          ++only_scaled[i];
+          REQUIRE(no_contact(nodes[n].triangle_begin, nodes[n].triangle_end, nodes[n].triangle_begin,
+                             nodes[n].triangle_end));
+        }
+        for (std::size_t j = 0; j < pairs.size(); ++j) {
+          const auto [a, b] = pairs[j];
+          if (!scaled.cannot_touch(a, b)) continue;
+          ++scaled_pairs[i];
+          if (pair_verdicts[j]) continue;
+          ++only_scaled[i];
+          REQUIRE(no_contact(nodes[a].triangle_begin, nodes[a].triangle_end, nodes[b].triangle_begin,
+                             nodes[b].triangle_end));
+        }
+      }
+    }
+  }
+  REQUIRE(unscaled_nodes > 100);
+  REQUIRE(unscaled_pairs >= 3);
+  for (std::size_t i = 0; i < scales.size(); ++i) {
+    INFO("positions times " << scales[i] << ": nodes " << scaled_nodes[i] << " of " << unscaled_nodes << ", pairs "
+                            << scaled_pairs[i] << " of " << unscaled_pairs << ", " << only_scaled[i]
+                            << " accepted only scaled");
+    // Not vacuous: the cull still accepts (nearly) what it does at scale 1 where the
+    // coefficients stay above the allowance.
+    if (scales[i] != 0x1p-500) {
+      CHECK(scaled_nodes[i] * 10 >= unscaled_nodes * 9);
+      CHECK(scaled_pairs[i] * 10 >= unscaled_pairs * 9);
+    }
+  }
+}
+
 TEST_CASE("normal cones: not used on a mesh whose patches at rest are small, used on one whose are large",
           "[patch_cull][query]") {
   // A coarse torus (few triangles per curved patch) pinching, and the fine folding sheet of
@@ -292,5 +398,69 @@ TEST_CASE("normal cones: not used on a mesh whose patches at rest are small, use
         ccd.query_positions(model.deformed_positions(q0), model.deformed_positions(q1), cones);
     CHECK(positions.pairs == report.pairs);
     CHECK((positions.stats.cone_culled > 0) == c.expect_cones);
+  }
+}
+
+TEST_CASE("normal cones: formed from positions times powers of two, they report exactly what exhaustive testing does",
+          "[patch_cull][query]") {
+  // Scaling every position by a power of two is exact, and the kernels decide contact
+  // exactly at any finite magnitude: the same pairs must come out at every scale. At 2^-280
+  // and 2^-400 the normals' coefficients (products of two coordinates) are near 1e-170 and
+  // 1e-242, their squares subnormal or 0; at 2^250 they are near 1e148, their squares near
+  // the largest double, and at 2^300 near 1e178, their squares infinite. At 2^-500 they fall
+  // near 1e-302, below the certified signs' absolute allowance (kUnderflowAllowance): the
+  // cones refuse every patch there, which only loses culls. The meshes whose patches the
+  // cones cull at scale 1 (the tests above): the folding sheet and the spiral ramp. The
+  // exhaustive reference uses no cull (query_exhaustive), only the kernels.
+  const std::vector<double> scales{0x1p-280, 0x1p-400, 0x1p-500, 0x1p250, 0x1p300};
+  std::vector<long> culled(scales.size(), 0);
+  for (const Keyframes& c : cases()) {
+    if (c.name != "folding sheet" && c.name != "spiral ramp") continue;
+    std::vector<std::vector<Vector3d>> frames;
+    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+    const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v);
+    const sscc::SubspaceModel model = sscc::test::keyframe_model(triangles, frames);
+    const sscc::SelfCcd ccd{sscc::SubspaceBvh(model)};
+    const int modes = model.mode_count();
+    std::vector<sscc::SubspaceModel> scaled_models;
+    std::vector<sscc::SelfCcd> scaled_ccds;
+    for (double scale : scales) {
+      std::vector<std::vector<Vector3d>> scaled_frames = frames;
+      for (auto& frame : scaled_frames) {
+        for (Vector3d& p : frame) p *= scale;
+      }
+      scaled_models.push_back(sscc::test::keyframe_model(triangles, scaled_frames));
+      scaled_ccds.emplace_back(sscc::SubspaceBvh(scaled_models.back()));
+    }
+    // Every pair of keyframes, forward: up to the whole fold in one step.
+    for (int from = 0; from < static_cast<int>(frames.size()); ++from) {
+      for (int to = from + 1; to < static_cast<int>(frames.size()); ++to) {
+        const Eigen::VectorXd q0 = sscc::test::keyframe_q(modes, from), q1 = sscc::test::keyframe_q(modes, to);
+        const std::vector<Vector3d> unscaled0 = model.deformed_positions(q0);
+        const auto unscaled_pairs = pairs_of(ccd.query_exhaustive(q0, q1));
+        for (std::size_t i = 0; i < scales.size(); ++i) {
+          INFO(c.name << ": keyframe " << from << " to " << to << ", positions times " << scales[i]);
+          const std::vector<Vector3d> x0 = scaled_models[i].deformed_positions(q0);
+          const std::vector<Vector3d> x1 = scaled_models[i].deformed_positions(q1);
+          // The scaled model's positions are the unscaled ones times the scale, exactly.
+          for (std::size_t v = 0; v < x0.size(); ++v) REQUIRE(x0[v] == scales[i] * unscaled0[v]);
+          sscc::SelfCcdOptions cones;  // the cones alone, formed from the positions
+          sscc::set_traditional(cones);
+          cones.use_normal_cones = true;
+          cones.threads = 1;
+          const sscc::SelfCcdReport with_cones = scaled_ccds[i].query_positions(x0, x1, cones);
+          const sscc::SelfCcdReport exhaustive = scaled_ccds[i].query_exhaustive(q0, q1);
+          REQUIRE(with_cones.pairs == exhaustive.pairs);
+          REQUIRE(with_cones.features == exhaustive.features);
+          REQUIRE(pairs_of(with_cones) == unscaled_pairs);  // the same triangle pairs as at scale 1
+          culled[i] += with_cones.stats.cone_culled;
+        }
+      }
+    }
+  }
+  // Not vacuous: the cones cull wherever the coefficients stay above the allowance.
+  for (std::size_t i = 0; i < scales.size(); ++i) {
+    INFO("positions times " << scales[i]);
+    if (scales[i] != 0x1p-500) CHECK(culled[i] > 50);
   }
 }

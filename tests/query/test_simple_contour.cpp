@@ -82,10 +82,16 @@ bool exactly_simple(const std::vector<Vector3d>& x0, const std::vector<Vector3d>
 }  // namespace
 
 TEST_CASE("simple contour: accepted loops are simple in projection at every sampled time", "[contour]") {
+  // Also with the positions times powers of two (exact; simplicity does not change): at
+  // 2^-280 and 2^-400 the products in the predicates are near 1e-169 and 1e-241, their squares
+  // subnormal or 0; at 2^300 near 1e180, their squares infinite. At 2^-500 the products fall
+  // near 1e-301, below the certified signs' absolute allowance: refusals there only lose culls.
+  const std::vector<double> scales{0x1p-280, 0x1p-400, 0x1p-500, 0x1p250, 0x1p300};
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const Vector3d up(0, 0, 1);
   int accepted = 0, refused = 0;
+  std::vector<int> accepted_scaled(scales.size(), 0);
   for (int trial = 0; trial < 400; ++trial) {
     const int n = 6 + 2 * (trial % 12);
     const std::vector<Vector3d> x0 = jagged_loop(n, 0.4 + 0.5 * (trial % 5) / 5.0, 0.3 * (trial % 3), rng);
@@ -93,15 +99,28 @@ TEST_CASE("simple contour: accepted loops are simple in projection at every samp
     const double motion = trial % 4 == 0 ? 0.8 : 0.15;  // large motions make some loops cross
     for (Vector3d& p : x1) p += motion * Vector3d(unit(rng), unit(rng), unit(rng));
     INFO("trial " << trial);
-    if (sscc::detail::stays_simple_in_projection(up, cycle(n), x0, x1)) {
-      ++accepted;
-      for (int k = 0; k <= 64; ++k) REQUIRE(exactly_simple(x0, x1, mpq_class(k, 64)));
-    } else {
-      ++refused;
+    const bool passes = sscc::detail::stays_simple_in_projection(up, cycle(n), x0, x1);
+    bool passes_scaled = false;
+    for (std::size_t i = 0; i < scales.size(); ++i) {
+      std::vector<Vector3d> y0 = x0, y1 = x1;
+      for (Vector3d& p : y0) p *= scales[i];
+      for (Vector3d& p : y1) p *= scales[i];
+      const bool scaled = sscc::detail::stays_simple_in_projection(up, cycle(n), y0, y1);
+      accepted_scaled[i] += scaled;
+      passes_scaled = passes_scaled || scaled;
     }
+    if (passes || passes_scaled) {
+      // The exact answer is the same at every scale: checked on the unscaled positions.
+      for (int k = 0; k <= 64; ++k) REQUIRE(exactly_simple(x0, x1, mpq_class(k, 64)));
+    }
+    (passes ? accepted : refused) += 1;
   }
   CHECK(accepted > 100);
   CHECK(refused > 30);
+  for (std::size_t i = 0; i < scales.size(); ++i) {
+    INFO("positions times " << scales[i] << ": " << accepted_scaled[i] << " accepted of " << accepted);
+    if (scales[i] != 0x1p-500) CHECK(accepted_scaled[i] == accepted);
+  }
 }
 
 TEST_CASE("simple contour: loops that cross, fold, touch or collapse are refused", "[contour]") {
