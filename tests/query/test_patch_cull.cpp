@@ -57,6 +57,26 @@ std::vector<Keyframes> cases() {
   return all;
 }
 
+/// cases() and a finer fold, for nodes large enough to be tested in pairs (kSmallestUnionPart).
+std::vector<Keyframes> cases_with_fine_sheet() {
+  std::vector<Keyframes> all = cases();
+  all.push_back({"fine folding sheet", 64, 16, false, false, {}});
+  for (double degrees : {0.0, 60.0, 120.0, 179.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  return all;
+}
+
+/// The positions of each keyframe.
+std::vector<std::vector<Vector3d>> keyframe_positions(const Keyframes& c) {
+  std::vector<std::vector<Vector3d>> frames;
+  for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+  return frames;
+}
+
+/// The model whose modes take the rest shape (the first keyframe) to each keyframe.
+sscc::SubspaceModel keyframe_model(const Keyframes& c) {
+  return sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), keyframe_positions(c));
+}
+
 /// Every non-adjacent pair through the kernels directly (validation/brute_force.hpp).
 std::vector<std::pair<int, int>> brute_force_pairs(const sscc::SubspaceModel& model, const Eigen::VectorXd& q0,
                                                    const Eigen::VectorXd& q1) {
@@ -75,6 +95,24 @@ std::vector<std::pair<int, int>> brute_force_pairs(const sscc::SubspaceModel& mo
   return pairs;
 }
 
+/// Whether no non-adjacent pair among the triangles at positions [begin, end) and [begin2,
+/// end2) of the hierarchy's order (the same range twice for a node alone) touches during the
+/// step x0 -> x1, by the kernels on every pair (validation/brute_force.hpp).
+bool no_contact(const sscc::SubspaceBvh& bvh, const std::vector<Vector3d>& x0, const std::vector<Vector3d>& x1,
+                int begin, int end, int begin2, int end2) {
+  const sscc::TriangleMesh& mesh = bvh.model().mesh();
+  for (int i = begin; i < end; ++i) {
+    for (int j = std::max(begin2, begin == begin2 ? i + 1 : begin2); j < end2; ++j) {
+      const int a = bvh.triangle_order()[i], b = bvh.triangle_order()[j];
+      if (mesh.adjacent(a, b)) continue;
+      if (sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]) <= 1.0) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 std::vector<std::pair<int, int>> pairs_of(const sscc::SelfCcdReport& report) {
   std::vector<std::pair<int, int>> pairs;
   for (const auto& p : report.pairs) pairs.push_back({p.first, p.second});
@@ -88,18 +126,16 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
   long culled = 0, culled_with_certificates = 0;
   int colliding_steps = 0, steps = 0;
   for (const Keyframes& c : cases()) {
-    std::vector<std::vector<Vector3d>> frames;
-    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
-    const sscc::SubspaceModel model =
-        sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
+    const sscc::SubspaceModel model = keyframe_model(c);
+    const int frames = static_cast<int>(c.shapes.size());
     const sscc::SubspaceBvh bvh(model);
     const sscc::SelfCcd ccd(bvh);
     const sscc::SelfCcd certified(bvh, sscc::Certificates::precompute(bvh));
     const int modes = model.mode_count();
     // Consecutive keyframes, and the jumps from the first to each (larger folds in one step).
     std::vector<std::pair<int, int>> transitions;
-    for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) transitions.push_back({k, k + 1});
-    for (int k = 2; k < static_cast<int>(frames.size()); ++k) transitions.push_back({0, k});
+    for (int k = 0; k + 1 < frames; ++k) transitions.push_back({k, k + 1});
+    for (int k = 2; k < frames; ++k) transitions.push_back({0, k});
     for (const auto& [from, to] : transitions) {
       const Eigen::VectorXd q0 = sscc::test::keyframe_q(modes, from), q1 = sscc::test::keyframe_q(modes, to);
       INFO(c.name << ": keyframe " << from << " to " << to);
@@ -197,39 +233,21 @@ TEST_CASE("normal cones: every node and node pair the cull accepts has no touchi
   // Reused across the case, as a detector reuses them across queries.
   sscc::detail::PatchCull::Caches caches;
   int accepted_nodes = 0, accepted_pairs = 0;
-  std::vector<Keyframes> all = cases();
-  // A finer fold, for nodes large enough to be tested in pairs (kSmallestUnionPart).
-  all.push_back({"fine folding sheet", 64, 16, false, false, {}});
-  for (double degrees : {0.0, 60.0, 120.0, 179.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  const std::vector<Keyframes> all = cases_with_fine_sheet();
   for (const Keyframes& c : all) {
-    std::vector<std::vector<Vector3d>> frames;
-    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
-    const sscc::SubspaceModel model =
-        sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
+    const sscc::SubspaceModel model = keyframe_model(c);
+    const int frames = static_cast<int>(c.shapes.size());
     const sscc::SubspaceBvh bvh(model);
     const sscc::detail::NodeBoundaries boundaries(bvh);
-    const sscc::TriangleMesh& mesh = model.mesh();
     const int modes = model.mode_count();
     const auto& nodes = bvh.nodes();
-    for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) {
+    for (int k = 0; k + 1 < frames; ++k) {
       const auto x0 = model.deformed_positions(sscc::test::keyframe_q(modes, k));
       const auto x1 = model.deformed_positions(sscc::test::keyframe_q(modes, k + 1));
       sscc::detail::PatchCull cull(
           bvh, boundaries, x0, x1, [](int) {}, caches);
-      // No non-adjacent pair among the triangles at positions [begin, end) and [begin2, end2)
-      // (the same range twice for a node alone) touches during the step.
       const auto no_contact = [&](int begin, int end, int begin2, int end2) {
-        for (int i = begin; i < end; ++i) {
-          for (int j = std::max(begin2, begin == begin2 ? i + 1 : begin2); j < end2; ++j) {
-            const int a = bvh.triangle_order()[i], b = bvh.triangle_order()[j];
-            if (mesh.adjacent(a, b)) continue;
-            if (sscc::validation::triangle_pair_first_contact(x0, x1, mesh.triangles()[a], mesh.triangles()[b]) <=
-                1.0) {
-              return false;
-            }
-          }
-        }
-        return true;
+        return ::no_contact(bvh, x0, x1, begin, end, begin2, end2);
       };
       INFO(c.name << ": keyframe " << k << " to " << k + 1);
       for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
@@ -268,22 +286,17 @@ TEST_CASE(
   // changes method; at 2^-500 most coefficients fall below the allowance.
   const std::vector<double> scales{0x1p-280, 0x1p-400, 0x1p-450, 0x1p-500, 0x1p250, 0x1p300, 0x1p450};
   sscc::detail::PatchCull::Caches caches, scaled_caches;
-  std::vector<Keyframes> all = cases();
-  all.push_back({"fine folding sheet", 64, 16, false, false, {}});
-  for (double degrees : {0.0, 60.0, 120.0, 179.0}) all.back().shapes.push_back(folded_sheet(degrees * M_PI / 180));
+  const std::vector<Keyframes> all = cases_with_fine_sheet();
   long unscaled_nodes = 0, unscaled_pairs = 0;
   std::vector<long> scaled_nodes(scales.size(), 0), scaled_pairs(scales.size(), 0), only_scaled(scales.size(), 0);
   for (const Keyframes& c : all) {
-    std::vector<std::vector<Vector3d>> frames;
-    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
-    const sscc::SubspaceModel model =
-        sscc::test::keyframe_model(sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v), frames);
+    const sscc::SubspaceModel model = keyframe_model(c);
+    const int frames = static_cast<int>(c.shapes.size());
     const sscc::SubspaceBvh bvh(model);
     const sscc::detail::NodeBoundaries boundaries(bvh);
-    const sscc::TriangleMesh& mesh = model.mesh();
     const auto& nodes = bvh.nodes();
     const int modes = model.mode_count();
-    for (int k = 0; k + 1 < static_cast<int>(frames.size()); ++k) {
+    for (int k = 0; k + 1 < frames; ++k) {
       const auto x0 = model.deformed_positions(sscc::test::keyframe_q(modes, k));
       const auto x1 = model.deformed_positions(sscc::test::keyframe_q(modes, k + 1));
       sscc::detail::PatchCull cull(
@@ -311,20 +324,8 @@ TEST_CASE(
         for (Vector3d& p : y1) p *= scales[i];
         sscc::detail::PatchCull scaled(
             bvh, boundaries, y0, y1, [](int) {}, scaled_caches);
-        // No non-adjacent pair among the triangles at positions [begin, end) and [begin2, end2)
-        // touches during the scaled step.
         const auto no_contact = [&](int begin, int end, int begin2, int end2) {
-          for (int p = begin; p < end; ++p) {
-            for (int q = std::max(begin2, begin == begin2 ? p + 1 : begin2); q < end2; ++q) {
-              const int a = bvh.triangle_order()[p], b = bvh.triangle_order()[q];
-              if (mesh.adjacent(a, b)) continue;
-              if (sscc::validation::triangle_pair_first_contact(y0, y1, mesh.triangles()[a], mesh.triangles()[b]) <=
-                  1.0) {
-                return false;
-              }
-            }
-          }
-          return true;
+          return ::no_contact(bvh, y0, y1, begin, end, begin2, end2);
         };
         for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
           if (!scaled.cannot_self_touch(n)) continue;
@@ -374,11 +375,7 @@ TEST_CASE("normal cones: not used on a mesh whose patches at rest are small, use
       {{"sheet", 16, 5, false, false, {folded_sheet(0.0), folded_sheet(0.5)}}, true}};
   for (const Case& c : all) {
     const Keyframes& k = c.frames;
-    std::vector<std::vector<Vector3d>> frames;
-    for (const Surface& shape : k.shapes)
-      frames.push_back(sscc::test::grid_positions(k.nu, k.nv, k.wrap_u, k.wrap_v, shape));
-    const sscc::SubspaceModel model =
-        sscc::test::keyframe_model(sscc::test::grid_triangles(k.nu, k.nv, k.wrap_u, k.wrap_v), frames);
+    const sscc::SubspaceModel model = keyframe_model(k);
     const sscc::SubspaceBvh bvh(model);
     const sscc::detail::NodeBoundaries boundaries(bvh);
     const double mean = sscc::detail::mean_patch_at_rest(bvh, boundaries);
@@ -416,8 +413,7 @@ TEST_CASE("normal cones: formed from positions times powers of two, they report 
   std::vector<long> culled(scales.size(), 0);
   for (const Keyframes& c : cases()) {
     if (c.name != "folding sheet" && c.name != "spiral ramp") continue;
-    std::vector<std::vector<Vector3d>> frames;
-    for (const Surface& s : c.shapes) frames.push_back(sscc::test::grid_positions(c.nu, c.nv, c.wrap_u, c.wrap_v, s));
+    const std::vector<std::vector<Vector3d>> frames = keyframe_positions(c);
     const std::vector<sscc::Triangle> triangles = sscc::test::grid_triangles(c.nu, c.nv, c.wrap_u, c.wrap_v);
     const sscc::SubspaceModel model = sscc::test::keyframe_model(triangles, frames);
     const sscc::SelfCcd ccd{sscc::SubspaceBvh(model)};
