@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "common/scaled_norm.hpp"
 
@@ -83,8 +84,11 @@ constexpr double kSteepestTangent = 0x1p900;
 double length(const Eigen::Vector3d& v) { return length3(v.x(), v.y(), v.z()); }
 
 bool normalised(const Eigen::Vector3d& v, Eigen::Vector3d& out) {
+  // Below the smallest normal double the scaled norm is no longer within a few units of
+  // roundoff (a subnormal axis could come out up to sqrt(2) long), and the cones' error terms
+  // assume a unit axis: such axes give no cone.
   const double size = length(v);
-  if (!(size > 0.0) || !std::isfinite(size)) return false;
+  if (!(size >= std::numeric_limits<double>::min()) || !std::isfinite(size)) return false;
   out = v / size;
   return true;
 }

@@ -88,9 +88,10 @@ int certified_sign_of_triple(const Eigen::Vector3d& d, const Eigen::Vector3d& w,
 namespace sscc::detail {
 
 /// Slack added to every angle computed in floating point below (radians). Each computed angle
-/// is an atan2(y, x) whose arguments err by at most a few u times sqrt(x^2 + y^2) (cross
-/// products' norms, dot products and error bounds of vectors; normalisation), so it is within
-/// 1e-14 of the angle of the exact arguments (atan2 itself errs by an ulp). 1e-9 leaves five
+/// is an atan2(y, x), or an atan of the rounded quotient y / x (one more rounding: at most u/2
+/// radians), whose arguments err by at most a few u times sqrt(x^2 + y^2) (cross products'
+/// norms, dot products and error bounds of vectors; normalisation), so it is within 1e-14 of
+/// the angle of the exact arguments (atan and atan2 themselves err by an ulp). 1e-9 leaves five
 /// orders of magnitude; smaller than 1e-14 could certify a cone rounding made up, larger
 /// only gives up cones within 1e-9 of 90 degrees.
 inline constexpr double kAngleSlack = 1e-9;

@@ -466,8 +466,8 @@ class StepContext {
   LazyBoxes<Aabb>& subspace_boxes_;
   LazyBoxes<Sweep>& node_sweeps_;
   LazyBoxes<Sweep>& triangle_sweeps_;  // by position in the BVH's triangle order
+  SelfCcdStats stats_;                 // before hits_, which keeps a pointer into it
   FeatureHits<FeatureContact> hits_;
-  SelfCcdStats stats_;
   const detail::PatchRadii* radii_ = nullptr;               // null: no cones bounded from the norm
   const detail::PatchRadii* rest_patches_ = nullptr;        // the nodes proven at rest (null: unknown)
   bool node_pair_radii_ = false;                            // the radii of node pairs tested too

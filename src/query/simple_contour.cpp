@@ -14,11 +14,12 @@ namespace {
 using Eigen::Vector3d;
 
 /// Margin on the bound of a rounding error made of a few roundings (each within u of the
-/// result): a projected box's bound, value - error - pad, carries the three roundings of the
-/// 3-term dot product and the one of the first subtraction (the pad's subtraction only moves
-/// the rounded bound outward: rounding is monotone), so 4u alone was short by terms of order
-/// u^2; 8u covers them with room. Smaller could leave a box short of the exact projection;
-/// larger only pads the boxes more.
+/// result): a projected box's bound, value - error - pad (and value + error + pad), carries the
+/// three roundings of the 3-term dot product and one per subtraction, the second of which can
+/// lose up to u |value - error| of the pad (all of it when the pad is below half an ulp), so
+/// it needs at least 5u plus terms of order u^2 times sum |axis_i| |p_i|: 4u was short by a
+/// first-order term (found by a review); 8u covers it with room. Smaller could leave a box
+/// short of the exact projection; larger only pads the boxes more.
 constexpr double kDotRounding = 8.0 * kUnitRoundoff;
 
 /// A vertex's or an edge's projected sweep: a box in the (u, w) frame over both ends of the

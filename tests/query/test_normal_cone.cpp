@@ -198,3 +198,22 @@ TEST_CASE("normal cone: cones of coefficients and merged cones hold every exact 
   }
   CHECK(narrow > 400);
 }
+
+TEST_CASE("normal cone: an axis shorter than the smallest normal double gives no cone", "[normal_cone]") {
+  // A subnormal axis normalises to a vector up to sqrt(2) long (its norm is no longer accurate
+  // to a few units of roundoff), and the cones' error terms assume a unit axis; with these
+  // coefficients it gave a cone within a half-space where the same direction at any normal
+  // length gives none.
+  sscc::detail::BernsteinNormals n;
+  for (int k = 0; k < 3; ++k) {
+    n.value[k] = Vector3d(0.95e-300, 0.95e-300, 0.0);
+    n.error[k] = Vector3d::Constant(1e-300);
+  }
+  for (double length : {1.0, 1e-300}) {
+    CHECK_FALSE(sscc::detail::cone_of(Vector3d(length, length, 0.0), &n, &n + 1).within_half_space());
+  }
+  const Vector3d subnormal(0x1p-1074, 0x1p-1074, 0.0);
+  CHECK_FALSE(sscc::detail::cone_of(subnormal, &n, &n + 1).within_half_space());
+  const Vector3d tiny_normal(0x1p-1000, 0x1p-1000, 0.0);
+  CHECK(std::abs(sscc::detail::cone_of(tiny_normal, &n, &n + 1).axis.norm() - 1.0) < 1e-15);
+}
