@@ -27,11 +27,20 @@ constexpr double kDown = 1.0 - kRadiusMargin;
 class RadiusBounds {
  public:
   explicit RadiusBounds(const SubspaceBvh& bvh)
-      : bvh_(bvh), mesh_(bvh.model().mesh()), rest_(mesh_.vertices()), r_(bvh.model().mode_count()) {
+      : bvh_(bvh),
+        mesh_(bvh.model().mesh()),
+        rest_(mesh_.vertices()),
+        r_(bvh.model().mode_count()),
+        modes_(bvh.model().scaled_basis().data()) {
     double largest_coordinate = 0.0, largest_block = 0.0;
     for (int v = 0; v < mesh_.vertex_count(); ++v) {
       largest_coordinate = std::max(largest_coordinate, rest_[v].cwiseAbs().maxCoeff());
       largest_block = std::max(largest_block, block(v).stableNorm());
+    }
+    if (largest_block > 0.0 && std::isfinite(largest_block) &&
+        std::abs(std::ilogb(largest_block)) > kModeExponentRange) {
+      scale_modes(std::ilogb(largest_block));
+      if (mode_exponent_ != 0) largest_block = std::ldexp(largest_block, -mode_exponent_);
     }
     // Per coordinate, position() rounds an r-term dot product and one addition: within
     // (r + 2) u of |p| + ||U_hat_v|| ||q_hat||; sqrt(3) for the vector; doubled for room.
@@ -52,7 +61,48 @@ class RadiusBounds {
 
   /// The positive root of hypothesis (i) for triangle t and direction d (0 when it fails at
   /// rest; infinity when the modes do not move the triangle's edges).
-  double triangle_radius(const Vector3d& d, int t) const {
+  double triangle_radius(const Vector3d& d, int t) const { return radius_of_norm(scaled_triangle_radius(d, t)); }
+  /// The radius of hypothesis (ii) for a boundary cycle seen along d (0 when its projection
+  /// is not certainly simple at rest).
+  double contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain) const {
+    return radius_of_norm(scaled_contour_radius(d, chain));
+  }
+
+ private:
+  /// Modes' block norms outside 2^-this..2^this are scaled (the constructor): their squares
+  /// and products stay well inside the double range. Lower: more models scaled (each
+  /// costs a copy of the basis); higher: products that leave the range.
+  static constexpr int kModeExponentRange = 200;
+
+  /// Far from 1, the rates' products (the quadratic term, the discriminant) overflow or
+  /// underflow: the radii are bounded for the modes times 2^-k instead, and a bound R' on the
+  /// norm of the coordinates times 2^k is the bound R' 2^-k on s (radius_of_norm): the
+  /// positions, and every quantity of the bounds, are the same products and sums of powers of
+  /// two. Only when every entry scales exactly (none becomes subnormal); else unscaled.
+  void scale_modes(int exponent) {
+    const RowMajorMatrix& basis = bvh_.model().scaled_basis();
+    scaled_modes_.resize(static_cast<std::size_t>(basis.size()));
+    for (Eigen::Index i = 0; i < basis.size(); ++i) {
+      const double entry = basis.data()[i];
+      scaled_modes_[i] = std::ldexp(entry, -exponent);
+      if (entry != 0.0 && !(std::abs(scaled_modes_[i]) >= std::numeric_limits<double>::min())) {
+        scaled_modes_.clear();
+        return;
+      }
+    }
+    modes_ = scaled_modes_.data();
+    mode_exponent_ = exponent;
+  }
+
+  /// A radius for the scaled modes as a bound on s: exact in the normal range; 0 below it
+  /// (ldexp could round a subnormal up); infinity above it, where R' 2^-k exceeds every
+  /// finite s.
+  double radius_of_norm(double scaled_radius) const {
+    const double radius = std::ldexp(scaled_radius, -mode_exponent_);
+    return radius >= std::numeric_limits<double>::min() ? radius : 0.0;
+  }
+
+  double scaled_triangle_radius(const Vector3d& d, int t) const {
     const Triangle& f = mesh_.triangles()[t];
     const Vector3d e1 = rest_[f[1]] - rest_[f[0]];
     const Vector3d e2 = rest_[f[2]] - rest_[f[0]];
@@ -89,9 +139,7 @@ class RadiusBounds {
     return denominator > 0.0 ? kDown * 2.0 * slack / denominator : std::numeric_limits<double>::infinity();
   }
 
-  /// The radius of hypothesis (ii) for a boundary cycle seen along d (0 when its projection
-  /// is not certainly simple at rest).
-  double contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain) const {
+  double scaled_contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain) const {
     if (!stays_simple_in_projection(d, chain, rest_, rest_)) return 0.0;
     const int k = static_cast<int>(chain.size());
     // Each vertex's parting rate from the chain's mean block C bounds a pair's by the
@@ -157,13 +205,10 @@ class RadiusBounds {
     return radius;
   }
 
- private:
-  /// Vertex v's scaled mode block (3 x r).
-  const double* row_data(int v) const {
-    return bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_;
-  }
+  /// Vertex v's scaled mode block (3 x r), times 2^-mode_exponent_.
+  const double* row_data(int v) const { return modes_ + 3 * static_cast<std::ptrdiff_t>(v) * r_; }
   Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>> block(int v) const {
-    return {bvh_.model().scaled_basis().data() + 3 * static_cast<std::ptrdiff_t>(v) * r_, 3, r_};
+    return {row_data(v), 3, r_};
   }
   /// A boundary vertex in pair_radius: its projected rest position, its index and, for an
   /// edge's end, a bound of ||U_hat_p - U_hat_e||_F.
@@ -221,6 +266,9 @@ class RadiusBounds {
   const TriangleMesh& mesh_;
   const std::vector<Vector3d>& rest_;
   int r_;
+  const double* modes_;               // the model's scaled basis, or scaled_modes_
+  int mode_exponent_ = 0;             // k: modes_ holds the basis times 2^-k
+  std::vector<double> scaled_modes_;  // empty when k = 0
   double eta0_ = 0.0, eta1_ = 0.0;
   std::vector<double> edge_norms_;
 };

@@ -47,8 +47,14 @@
 // underflow to 0 for bases of entries near 1e-160 and below, moved by coordinates near 1e160,
 // and would leave the radii unbounded; products in the subnormal range, which err absolutely,
 // are covered by kUnderflowAllowance (normal_cone.hpp), added to each rate and to the
-// quadratic term, whose products of two rates underflow first (such a basis keeps only tiny
-// radii). A mode-free set (every rate 0) gets an infinite radius without dividing by zero.
+// quadratic term, whose products of two rates underflow first. A basis whose blocks' norms lie
+// outside 2^-200..2^200 (entries near 1e-160, or near 1e170, whose products overflow) is
+// bounded as the basis times 2^-k instead, which every entry holds exactly (else it is not
+// scaled), k the exponent of its largest block's norm: the computed positions are the same
+// products with the coordinates times 2^k, so a radius R' of those is the radius R' 2^-k of
+// the original, exact in the normal range (0 below it, infinity above it, where every finite
+// norm is below the original's radius). A mode-free set (every rate 0) gets an infinite radius
+// without dividing by zero.
 // The step's norm s is computed in floating point too (relative error near 1e-15, inside the
 // margin). d, the normalized sum of the set's area-weighted normals, must be unit to rounding:
 // the contour's gaps are taken in the projection I - d d^T, which with |d| off 1 keeps part of

@@ -93,3 +93,14 @@ TEST_CASE("BVH: the bounds hold for a basis whose squares underflow", "[bvh]") {
   const sscc::SubspaceBvh bvh(model);
   CHECK(bvh.validate(30, 2e170, 5) == "");
 }
+
+TEST_CASE("BVH: the build and the bounds hold for modes whose squares overflow", "[bvh]") {
+  // Modes of entries near 1e170 (their squares overflow) moved by coordinates near 1e-170: the
+  // clustering compares squared distances of features holding the modes (the test runner
+  // traps the overflow).
+  const sscc::TriangleMesh mesh = sscc::test::uv_sphere(8, 16);
+  const sscc::SubspaceModel model(mesh, 1e170 * sscc::polynomial_basis(mesh, 27), Eigen::VectorXd::Ones(27));
+  const sscc::SubspaceBvh bvh(model);
+  CHECK(bvh.validate(30, 2e-170, 5) == "");
+  CHECK(bvh.build_stats().depth >= 3);
+}

@@ -609,13 +609,12 @@ TEST_CASE(
   // gaps along nu (near 0.2), and leave nu computed from them off the projection plane by as
   // much before its re-projection: only the margins keep the radius below the theorem's,
   // computed on the same mesh moved back to the origin (exactly: the moved coordinates are
-  // within a factor 2 of the offset). Modes times 1e150 or 1e-170 scale every rate and radius
-  // (1e150: the hierarchy's clustering squares the modes' entries, which 1e170 would overflow);
-  // the scaled norms and kUnderflowAllowance keep their roots' radii from exceeding the
-  // original's.
+  // within a factor 2 of the offset). Modes times 1e170 or 1e-170 scale every rate and radius
+  // (their squares and products overflow or underflow: the radii are bounded for the modes
+  // scaled back by a power of two); their roots' radii must not exceed the original's.
   std::mt19937_64 rng(71);
   constexpr double kOffset = 1e7;
-  constexpr double kHuge = 1e150, kTiny = 1e-170;
+  constexpr double kHuge = 1e170, kTiny = 1e-170;
   int offset_nodes = 0;
   for (int trial = 0; trial < 8; ++trial) {
     const sscc::SubspaceModel original = random_nearly_shut_c(rng);
@@ -653,9 +652,8 @@ TEST_CASE(
     "[patch_radius]") {
   // The wavy sheet's modes times 1e-170: every square of a basis entry underflows to 0, so
   // plain norms of the rates would be 0 and every radius infinite, while coordinates of norm
-  // 1e170 move the mesh as the original's of norm 1 do. The rates' norms are scaled, but their
-  // products underflow too and are bounded by kUnderflowAllowance: such a basis keeps radii
-  // far below the original's scaled back (it loses its culls), never above.
+  // 1e170 move the mesh as the original's of norm 1 do. The radii are bounded for the modes
+  // scaled back by a power of two (patch_radius.cpp, scale_modes): never above the original's.
   constexpr double kTiny = 1e-170;
   const sscc::SubspaceModel original = models()[1];
   const Eigen::MatrixXd basis = original.scaled_basis();
@@ -833,6 +831,25 @@ TEST_CASE(
   REQUIRE(original > 0.0);
   REQUIRE(std::isfinite(original));
   CHECK(root_radius(kTiny) * kTiny <= original * (1.0 + kTheoremExcess));
+}
+
+TEST_CASE("patch radii: modes times a power of two far from 1 keep the original's radius, scaled back",
+          "[patch_radius]") {
+  // Times 2^565 the rates' products overflow and times 2^-565 they underflow; the radii are
+  // bounded for the modes scaled back by a power of two, whose products are exact: the root's
+  // radius (the root holds the whole sheet in every hierarchy; their clusterings differ) is the
+  // original's times the inverse power, but for the absolute allowances every rate carries.
+  const sscc::SubspaceModel original = models()[1];
+  const double root = Built(original).radii.node_radius(0);
+  REQUIRE(root > 0.0);
+  REQUIRE(std::isfinite(root));
+  for (const int exponent : {565, 300, -300, -565}) {
+    INFO("modes times 2^" << exponent);
+    const sscc::SubspaceModel scaled(original.mesh(), std::ldexp(1.0, exponent) * original.scaled_basis(),
+                                     VectorXd::Ones(original.mode_count()));
+    const double scaled_back = std::ldexp(Built(scaled).radii.node_radius(0), exponent);
+    CHECK(std::abs(scaled_back - root) <= 1e-12 * root);
+  }
 }
 
 TEST_CASE("patch radii: a set whose normals' sum has subnormal squares gets no radius above the theorem's",

@@ -222,6 +222,36 @@ TEST_CASE("self-CCD: huge coordinates with tiny modes keep every bound finite", 
   CHECK(detector.query_discrete(q1).pairs.size() == 4);
 }
 
+TEST_CASE("self-CCD: huge modes moved by tiny coordinates, every cull on, as exhaustive testing", "[query]") {
+  // Modes of entries near 1e170 (their squares and their rates' products overflow) moved by
+  // coordinates near 1e-170 move the sphere as the polynomial modes at scale 1 do: the
+  // hierarchy, the cones bounded from the norm and the displacement bounds must neither trap
+  // (the test runner traps overflow) nor cull a contact.
+  const sscc::TriangleMesh mesh = sscc::test::uv_sphere(8, 16);
+  const sscc::SubspaceModel model(mesh, 1e170 * sscc::polynomial_basis(mesh, 27), Eigen::VectorXd::Ones(27));
+  const sscc::SubspaceBvh bvh(model);
+  const sscc::SelfCcd detector(bvh);
+  sscc::SelfCcdOptions options;  // the defaults: normal cones and displacement bounds on
+  std::mt19937_64 rng(3);
+  int colliding = 0;
+  long radius_culls = 0;
+  for (double amplitude : {0.01, 0.05, 0.25, 1.0}) {
+    for (int step = 0; step < 4; ++step) {
+      const Eigen::VectorXd q0 = 1e-170 * random_q(rng, amplitude);
+      const Eigen::VectorXd q1 = 1e-170 * random_q(rng, amplitude);
+      const sscc::SelfCcdReport report = detector.query(q0, q1, options);
+      const sscc::SelfCcdReport expected = detector.query_exhaustive(q0, q1, options);
+      INFO("amplitude " << amplitude << ", step " << step);
+      CHECK(report.pairs == expected.pairs);
+      CHECK(report.features == expected.features);
+      colliding += expected.collided();
+      radius_culls += report.stats.cone_radius_culled;
+    }
+  }
+  CHECK(colliding > 0);
+  CHECK(radius_culls > 0);  // the cones bounded from the norm cull at this scale too
+}
+
 TEST_CASE("self-CCD: a step that does not move reports nothing, bad q is refused", "[query]") {
   const Fixture f;
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(27);
