@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "certificates/box_box_bound.hpp"
@@ -190,10 +191,24 @@ std::string problem_with(const CertificateParameters& parameters) {
   return "";
 }
 
+std::string basis_scale_problem(const SubspaceModel& model) {
+  const RowMajorMatrix& basis = model.scaled_basis();
+  const double largest = basis.size() > 0 ? basis.cwiseAbs().maxCoeff() : 0.0;
+  if (largest == 0.0 || std::abs(std::ilogb(largest)) <= kLargestCertifiedModeExponent) return "";
+  std::ostringstream message;
+  message << "the scaled basis's largest entry is " << largest << ", outside 2^-" << kLargestCertifiedModeExponent
+          << "..2^" << kLargestCertifiedModeExponent
+          << ": the products of its entries underflow or overflow and certificates would not be valid; express the "
+             "model in other units, or query without certificates (SelfCcdOptions::use_certificates = false)";
+  return message.str();
+}
+
 Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters,
                                       const PrecomputeProgress& progress) {
   const std::string problem = problem_with(parameters);
   if (!problem.empty()) throw std::invalid_argument("certificates: " + problem);
+  const std::string scale_problem = basis_scale_problem(bvh.model());
+  if (!scale_problem.empty()) throw std::invalid_argument("certificates: " + scale_problem);
   const auto start = std::chrono::steady_clock::now();
   Certificates certificates(bvh, parameters);
   certificates.global_radius_ = global_radius_of(bvh.model(), parameters.global_radius_scale);
@@ -292,6 +307,8 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
 }
 
 void Certificates::check_belongs_to(const SubspaceBvh& bvh) const {
+  const std::string scale_problem = basis_scale_problem(bvh.model());
+  if (!scale_problem.empty()) throw std::invalid_argument("certificates: " + scale_problem);
   if (static_cast<int>(bvh.nodes().size()) != node_count() || key_of(bvh, parameters_) != key_) {
     throw std::invalid_argument(
         "certificates: computed for another mesh, basis, weights or hierarchy, or another set of excluded pairs (key "

@@ -220,3 +220,40 @@ TEST_CASE("certificates: bad parameters and misuse are refused with a message", 
   separation.use_certificates = false;
   REQUIRE_NOTHROW(ccd.query(q, q, separation));
 }
+
+TEST_CASE("certificates: a basis of entries far from 1 is refused, and within the range the radii scale", "[cert]") {
+  // Times 2^-565 (entries near 1e-170) the Gram matrices of the mode blocks underflow and every
+  // radius came out infinite; times 2^520 they overflow; from 2^-300 down the precomputation
+  // overflows (the test runner traps it). Within the range the root's radius,
+  // scaled back, is scale 1's (to the hierarchies' differences: their clusterings weigh the
+  // modes against the positions).
+  using namespace sscc;
+  const TriangleMesh mesh = test::uv_sphere(8, 16);
+  const Eigen::MatrixXd basis = polynomial_basis(mesh, 27);
+  const auto model_times = [&](int exponent) {
+    return SubspaceModel(mesh, std::ldexp(1.0, exponent) * basis, Eigen::VectorXd::Ones(27));
+  };
+  const SubspaceModel original = model_times(0);
+  const SubspaceBvh original_bvh(original);
+  const Certificates original_certificates = Certificates::precompute(original_bvh);
+  const double root = original_certificates.node_radius(0);
+  REQUIRE(root > 0.0);
+  REQUIRE(std::isfinite(root));
+  for (const int exponent : {-565, -260, 260, 520}) {
+    INFO("modes times 2^" << exponent);
+    const SubspaceModel model = model_times(exponent);
+    const SubspaceBvh bvh(model);
+    CHECK(basis_scale_problem(model).find("scaled basis") != std::string::npos);
+    CHECK_THROWS_AS(Certificates::precompute(bvh), std::invalid_argument);
+    // Certificates met with such a model are refused for its scale (checked before the key).
+    CHECK_THROWS_WITH(SelfCcd(bvh, original_certificates), Catch::Contains("scaled basis"));
+  }
+  for (const int exponent : {-190, -100, 100, 190}) {
+    INFO("modes times 2^" << exponent);
+    const SubspaceModel model = model_times(exponent);
+    const SubspaceBvh bvh(model);
+    CHECK(basis_scale_problem(model).empty());
+    const double scaled_back = std::ldexp(Certificates::precompute(bvh).node_radius(0), exponent);
+    CHECK(std::abs(scaled_back - root) <= 1e-3 * root);
+  }
+}

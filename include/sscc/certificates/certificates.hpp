@@ -51,6 +51,23 @@ struct CertificateParameters {
 /// precompute() refuses invalid parameters, read() refuses files that hold them.
 std::string problem_with(const CertificateParameters& parameters);
 
+/// The certificates hold for scaled bases whose largest entry lies within 2^-this..2^this:
+/// past it the Gram matrices of the mode blocks (their entries' products) underflow or
+/// overflow. Measured on a sphere's 27 polynomial modes times 2^e: the root's radius, scaled
+/// back, within 1e-4 of scale 1's (the hierarchies differ) for e from -500 to 500 with
+/// floating-point traps off, but from e = -300 down the precomputation overflows on the way;
+/// at e = -565 (entries near 1e-170) every radius came out infinite, a certificate for
+/// everything; at 520 and above every radius 0. Larger: bases whose precomputation leaves the
+/// double range, then whose certificates are not valid; smaller: refused bases that would
+/// have been fine.
+inline constexpr int kLargestCertifiedModeExponent = 200;
+
+/// What keeps certificates from being valid for `model` ("" when nothing): a scaled basis
+/// whose largest entry is outside 2^-kLargestCertifiedModeExponent..2^kLargestCertifiedModeExponent
+/// (a model in other units is fine; queries without certificates hold at any scale).
+/// precompute() refuses such models, check_belongs_to() their certificates.
+std::string basis_scale_problem(const SubspaceModel& model);
+
 struct PrecomputeStats {
   long node_pairs_visited = 0;
   long node_pairs_culled = 0;       ///< by the box-box bound
@@ -67,7 +84,8 @@ using PrecomputeProgress = std::function<void(int, int)>;
 class Certificates {
  public:
   /// Computes the certificates of every node and sibling pair, in parallel (OpenMP).
-  /// Throws std::invalid_argument for parameters out of range.
+  /// Throws std::invalid_argument for parameters out of range and for a basis of entries
+  /// outside the range certificates hold for (basis_scale_problem).
   static Certificates precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters = {},
                                  const PrecomputeProgress& progress = {});
 
@@ -94,7 +112,8 @@ class Certificates {
   std::uint64_t key() const { return key_; }
   /// Statistics of the precomputation (zero for certificates read from a file).
   const PrecomputeStats& stats() const { return stats_; }
-  /// Throws std::invalid_argument when the certificates were not computed for bvh.
+  /// Throws std::invalid_argument when the certificates were not computed for bvh, or its
+  /// basis is outside the range certificates hold for (basis_scale_problem).
   void check_belongs_to(const SubspaceBvh& bvh) const;
 
  private:
