@@ -45,13 +45,13 @@ SubspaceBvh::SubspaceBvh(const SubspaceModel& model, std::uint64_t seed) : model
     }
   }
   // k-means compares squared distances of features: scaled by a power of two (exactly, so
-  // the same tree) to a largest entry near 1, they neither overflow for modes of entries
-  // near 1e170 nor underflow for rest shapes of coordinates near 1e-170.
+  // the same tree) to a largest entry near 1, they do not overflow for modes of entries near
+  // 1e170 (smaller entries may still underflow: any partition is a valid tree).
   double largest = 0.0;
   for (double x : feature_) largest = std::max(largest, std::abs(x));
   if (largest > 0.0 && std::isfinite(largest)) {
-    const double scale = std::ldexp(1.0, -std::ilogb(largest));
-    for (double& x : feature_) x *= scale;
+    const int exponent = std::ilogb(largest);
+    for (double& x : feature_) x = std::ldexp(x, -exponent);
   }
   std::vector<int> all(mesh.triangle_count());
   for (int t = 0; t < mesh.triangle_count(); ++t) all[t] = t;

@@ -98,6 +98,11 @@ class RadiusBounds {
   /// (ldexp could round a subnormal up); infinity above it, where R' 2^-k exceeds every
   /// finite s.
   double radius_of_norm(double scaled_radius) const {
+    if (!(scaled_radius > 0.0)) return 0.0;
+    if (std::isinf(scaled_radius) ||
+        std::ilogb(scaled_radius) - mode_exponent_ >= std::numeric_limits<double>::max_exponent) {
+      return std::numeric_limits<double>::infinity();  // without the overflow ldexp would raise
+    }
     const double radius = std::ldexp(scaled_radius, -mode_exponent_);
     return radius >= std::numeric_limits<double>::min() ? radius : 0.0;
   }
@@ -135,7 +140,9 @@ class RadiusBounds {
                              kUnderflowAllowance;  // products of rates near 1e-160 underflow
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
     if (!(slack > 0.0)) return 0.0;
-    const double denominator = linear + std::sqrt(linear * linear + 4.0 * quadratic * slack);
+    // hypot: linear^2 and 4 quadratic slack can underflow (coordinates near 1e-76 with modes
+    // near 2^-200), and the root without them would be up to twice the true one.
+    const double denominator = linear + std::hypot(linear, 2.0 * std::sqrt(quadratic) * std::sqrt(slack));
     return denominator > 0.0 ? kDown * 2.0 * slack / denominator : std::numeric_limits<double>::infinity();
   }
 
@@ -328,11 +335,10 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   // Pairs of nodes under patches whose triangles share an edge: the patches themselves, and
   // below the lowest common ancestor of two such triangles every pair of their ancestors
   // whose sizes the traversal pairs (within kLargestUnionRatio), kept where their own union's
-  // radius exceeds their patches'. Not leaves (below kSmallestConeNode triangles): measured
-  // on the cones query at amplitude 0.01, one thread, their pairs quadrupled the table and
-  // slowed its lookups more than their culls saved (the 75k bunny 8.0 ms with them against
-  // 5.5 without, the knot 1.52 against 1.29, the lion 3.22 against 3.25); pairs of nodes of
-  // at least 16 triangles only: the bunny 5.2 ms, the lion 3.46, the knot 1.93.
+  // radius exceeds their patches'. Leaves too (kSmallestPairPart): in a hash map their pairs,
+  // which quadruple the table, had slowed its lookups more than their culls saved (the 75k
+  // bunny at amplitude 0.01 8.0 ms with them against 5.5 without); PairRadiusTable's lists
+  // cost less.
   const TriangleMesh& mesh = bvh.model().mesh();
   std::vector<int> leaf_of(mesh.triangle_count()), position_of(mesh.triangle_count());
   for (int n = 0; n < node_count; ++n) {
@@ -378,7 +384,7 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
             // only then (a node under a patch may be disconnected or pinched, on the lion and
             // the dragon; its union with a neighbour may then bound several cycles, which it accepts).
             if (patch_[a] >= 0 && patch_[b] >= 0 && boundaries.simple_cycle(a) && boundaries.simple_cycle(b) &&
-                std::min(size(a), size(b)) >= kSmallestConeNode &&
+                std::min(size(a), size(b)) >= kSmallestPairPart &&
                 std::max(size(a), size(b)) <= kLargestUnionRatio * std::min(size(a), size(b))) {
               node_candidates.insert(key_of(a, b));
             }
@@ -407,23 +413,26 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
     for (std::size_t i = 0; i < ordered.size(); ++i) result[i] = {ordered[i], radii[i]};
     return result;
   };
+  std::vector<std::pair<std::uint64_t, double>> kept;
   for (const auto& [key, radius] : radii_of(patch_candidates, [](int, int) { return 0.0; })) {
-    if (radius > 0.0) patch_pairs_.emplace(key, radius);
+    if (radius > 0.0) kept.emplace_back(key, radius);
   }
+  patch_pairs_ = PairRadiusTable(node_count, std::move(kept));
+  kept.clear();
   const auto coarse = [&](int a, int b) { return patch_pair_radius(patch_[a], patch_[b]); };
   for (const auto& [key, radius] : radii_of(node_candidates, coarse)) {
     if (radius > coarse(static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu))) {
-      node_pairs_.emplace(key, radius);
+      kept.emplace_back(key, radius);
     }
   }
+  node_pairs_ = PairRadiusTable(node_count, std::move(kept));
   largest_patch_pair_ = node_radius_;
   largest_node_pair_.assign(nodes.size(), 0.0);
-  const auto note_largest = [](const PairRadii& pairs, std::vector<double>& largest) {
-    for (const auto& [key, radius] : pairs) {
-      for (const int n : {static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)}) {
-        largest[n] = std::max(largest[n], radius);
-      }
-    }
+  const auto note_largest = [](const PairRadiusTable& pairs, std::vector<double>& largest) {
+    pairs.for_each([&](int a, int b, double radius) {
+      largest[a] = std::max(largest[a], radius);
+      largest[b] = std::max(largest[b], radius);
+    });
   };
   note_largest(patch_pairs_, largest_patch_pair_);
   note_largest(node_pairs_, largest_node_pair_);
@@ -433,7 +442,7 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   }
   std::sort(sorted_radii_.begin(), sorted_radii_.end());
   std::sort(sorted_patch_radii_.begin(), sorted_patch_radii_.end());
-  for (const auto& pair : node_pairs_) sorted_pair_radii_.push_back(pair.second);
+  node_pairs_.for_each([&](int, int, double radius) { sorted_pair_radii_.push_back(radius); });
   std::sort(sorted_pair_radii_.begin(), sorted_pair_radii_.end());
 }
 
@@ -443,10 +452,17 @@ double PatchRadii::node_pair_fraction_above(double s) const { return detail::fra
 
 double PatchRadii::patch_fraction_above(double s) const { return detail::fraction_above(sorted_patch_radii_, s); }
 
-double PatchRadii::lookup(const PairRadii& pairs, int a, int b) {
-  if (a > b) std::swap(a, b);
-  const auto found = pairs.find((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b));
-  return found == pairs.end() ? 0.0 : found->second;
+PairRadiusTable::PairRadiusTable(int node_count, std::vector<std::pair<std::uint64_t, double>> pairs)
+    : offsets_(node_count + 1, 0) {
+  std::sort(pairs.begin(), pairs.end());
+  partners_.reserve(pairs.size());
+  radii_.reserve(pairs.size());
+  for (const auto& [key, radius] : pairs) {
+    ++offsets_[(key >> 32) + 1];
+    partners_.push_back(static_cast<int>(key & 0xffffffffu));
+    radii_.push_back(radius);
+  }
+  for (int n = 0; n < node_count; ++n) offsets_[n + 1] += offsets_[n];
 }
 
 double PatchRadii::pair_radius(int a, int b) const {

@@ -641,6 +641,7 @@ TEST_CASE(
       INFO("trial " << trial << ", modes times " << scale);
       const Built scaled(sscc::SubspaceModel(original.mesh(), scale * original.scaled_basis(), weights));
       CHECK(scaled.radii.node_radius(0) * scale <= root * (1.0 + kTheoremExcess));
+      CHECK(scaled.radii.node_radius(0) * scale >= root * (1.0 - 1e-9));  // scaled exactly, not lost
     }
   }
   CHECK(offset_nodes > 8);
@@ -664,6 +665,7 @@ TEST_CASE(
   // The root holds the whole sheet in both hierarchies (their clusterings differ).
   REQUIRE(radii.node_radius(0) > 0.0);
   CHECK(tiny_radii.node_radius(0) * kTiny <= radii.node_radius(0) * (1.0 + kTheoremExcess));
+  CHECK(tiny_radii.node_radius(0) * kTiny >= radii.node_radius(0) * (1.0 - 1e-9));
 
   // No mode moves anything: no rate, no rounding, the radii as large as they come, and no
   // division by zero on the way (the test runner traps it).
@@ -831,6 +833,7 @@ TEST_CASE(
   REQUIRE(original > 0.0);
   REQUIRE(std::isfinite(original));
   CHECK(root_radius(kTiny) * kTiny <= original * (1.0 + kTheoremExcess));
+  CHECK(root_radius(kTiny) * kTiny >= original * (1.0 - 1e-9));
 }
 
 TEST_CASE("patch radii: modes times a power of two far from 1 keep the original's radius, scaled back",
@@ -850,6 +853,22 @@ TEST_CASE("patch radii: modes times a power of two far from 1 keep the original'
     const double scaled_back = std::ldexp(Built(scaled).radii.node_radius(0), exponent);
     CHECK(std::abs(scaled_back - root) <= 1e-12 * root);
   }
+}
+
+TEST_CASE("patch radii: a radius past the largest double, scaled back, is infinite without an overflow",
+          "[patch_radius]") {
+  // The wavy sheet moved by its three translations times 2^-1000: the rates between vertices
+  // are 0, and the radius for the modes scaled by 2^1000 (set by the rounding allowance alone)
+  // times 2^1000 exceeds the largest double: every finite norm is below it. The test runner
+  // traps the overflow that ldexp would raise.
+  const sscc::SubspaceModel original = models()[1];
+  const int vertices = original.mesh().vertex_count();
+  Eigen::MatrixXd translations = Eigen::MatrixXd::Zero(3 * vertices, 3);
+  for (int v = 0; v < vertices; ++v) {
+    for (int k = 0; k < 3; ++k) translations(3 * v + k, k) = std::ldexp(1.0, -1000);
+  }
+  const Built built(sscc::SubspaceModel(original.mesh(), translations, VectorXd::Ones(3)));
+  CHECK(std::isinf(built.radii.node_radius(0)));
 }
 
 TEST_CASE("patch radii: a set whose normals' sum has subnormal squares gets no radius above the theorem's",
