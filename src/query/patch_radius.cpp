@@ -98,7 +98,8 @@ class RadiusBounds {
   /// (ldexp could round a subnormal up); infinity above it, where R' 2^-k exceeds every
   /// finite s.
   double radius_of_norm(double scaled_radius) const {
-    if (!(scaled_radius > 0.0)) return 0.0;
+    // Below the normal range a radius errs absolutely, by more than kDown covers once scaled up.
+    if (!(scaled_radius >= std::numeric_limits<double>::min())) return 0.0;
     if (std::isinf(scaled_radius) ||
         std::ilogb(scaled_radius) - mode_exponent_ >= std::numeric_limits<double>::max_exponent) {
       return std::numeric_limits<double>::infinity();  // without the overflow ldexp would raise

@@ -449,8 +449,9 @@ TEST_CASE("patch radii: the fractions above a norm count the nodes' and the patc
   }
 }
 
-TEST_CASE("patch radii: every patch's and every adjacent pair's radius is the theorem's", "[patch_radius]") {
-  int nodes_checked = 0, pairs_checked = 0;
+TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' radius is the theorem's",
+          "[patch_radius]") {
+  int nodes_checked = 0, pairs_checked = 0, node_pairs_checked = 0, leaf_pairs_checked = 0;
   for (const sscc::SubspaceModel& model : models()) {
     const sscc::SubspaceBvh bvh(model);
     const sscc::detail::NodeBoundaries boundaries(bvh);
@@ -480,9 +481,38 @@ TEST_CASE("patch radii: every patch's and every adjacent pair's radius is the th
         ++pairs_checked;
       }
     }
+    // Node pairs with a radius of their own (above their patches' union's), leaves' included.
+    const auto& nodes = bvh.nodes();
+    const int count = static_cast<int>(nodes.size());
+    std::vector<int> patch(count, -1);  // children follow their parent in the node array
+    for (int n = 0; n < count; ++n) {
+      const int parent = boundaries.parent(n);
+      patch[n] = parent >= 0 && patch[parent] >= 0 ? patch[parent] : radii.node_radius(n) > 0.0 ? n : -1;
+    }
+    for (int a = 0; a < count; ++a) {
+      for (int b = a + 1; b < count && patch[a] >= 0; ++b) {
+        const bool disjoint =
+            nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+        if (!disjoint || patch[b] < 0) continue;
+        const double radius = radii.pair_radius(a, b);
+        if (!(radius > radii.pair_radius(patch[a], patch[b]))) continue;
+        INFO("nodes " << a << " and " << b);
+        REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain));
+        std::vector<int> both = triangles_of(bvh, a);
+        const std::vector<int> other = triangles_of(bvh, b);
+        both.insert(both.end(), other.begin(), other.end());
+        const double expected = theorem_radius(model, both, union_chain);
+        REQUIRE(radius <= expected * (1.0 + kTheoremExcess));
+        REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
+        ++node_pairs_checked;
+        leaf_pairs_checked += nodes[a].is_leaf() || nodes[b].is_leaf();
+      }
+    }
   }
   CHECK(nodes_checked > 20);
   CHECK(pairs_checked > 5);
+  CHECK(leaf_pairs_checked > 20);
+  CHECK(node_pairs_checked > leaf_pairs_checked);
 }
 
 namespace {
