@@ -83,6 +83,27 @@ double along(const Vector3d& d, const std::vector<Vector3d>& x, const sscc::Tria
   return d.dot((x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]));
 }
 
+/// visit(a, b) for every disjoint node pair under patches whose own radius beats their
+/// patches' union's (PatchRadii keeps a node pair's radius only then).
+template <typename Visit>
+void for_each_own_node_pair(const sscc::SubspaceBvh& bvh, const sscc::detail::NodeBoundaries& boundaries,
+                            const sscc::detail::PatchRadii& radii, Visit visit) {
+  const auto& nodes = bvh.nodes();
+  const int count = static_cast<int>(nodes.size());
+  std::vector<int> patch(count, -1);  // children follow their parent in the node array
+  for (int n = 0; n < count; ++n) {
+    const int parent = boundaries.parent(n);
+    patch[n] = parent >= 0 && patch[parent] >= 0 ? patch[parent] : radii.node_radius(n) > 0.0 ? n : -1;
+  }
+  for (int a = 0; a < count; ++a) {
+    for (int b = a + 1; b < count && patch[a] >= 0; ++b) {
+      const bool disjoint =
+          nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
+      if (disjoint && patch[b] >= 0 && radii.pair_radius(a, b) > radii.pair_radius(patch[a], patch[b])) visit(a, b);
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("patch radii: below a patch's radius its normals keep their side and its contour stays simple",
@@ -482,32 +503,19 @@ TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' rad
       }
     }
     // Node pairs with a radius of their own (above their patches' union's), leaves' included.
-    const auto& nodes = bvh.nodes();
-    const int count = static_cast<int>(nodes.size());
-    std::vector<int> patch(count, -1);  // children follow their parent in the node array
-    for (int n = 0; n < count; ++n) {
-      const int parent = boundaries.parent(n);
-      patch[n] = parent >= 0 && patch[parent] >= 0 ? patch[parent] : radii.node_radius(n) > 0.0 ? n : -1;
-    }
-    for (int a = 0; a < count; ++a) {
-      for (int b = a + 1; b < count && patch[a] >= 0; ++b) {
-        const bool disjoint =
-            nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
-        if (!disjoint || patch[b] < 0) continue;
-        const double radius = radii.pair_radius(a, b);
-        if (!(radius > radii.pair_radius(patch[a], patch[b]))) continue;
-        INFO("nodes " << a << " and " << b);
-        REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain));
-        std::vector<int> both = triangles_of(bvh, a);
-        const std::vector<int> other = triangles_of(bvh, b);
-        both.insert(both.end(), other.begin(), other.end());
-        const double expected = theorem_radius(model, both, union_chain);
-        REQUIRE(radius <= expected * (1.0 + kTheoremExcess));
-        REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
-        ++node_pairs_checked;
-        leaf_pairs_checked += nodes[a].is_leaf() || nodes[b].is_leaf();
-      }
-    }
+    for_each_own_node_pair(bvh, boundaries, radii, [&](int a, int b) {
+      const double radius = radii.pair_radius(a, b);
+      INFO("nodes " << a << " and " << b);
+      REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain));
+      std::vector<int> both = triangles_of(bvh, a);
+      const std::vector<int> other = triangles_of(bvh, b);
+      both.insert(both.end(), other.begin(), other.end());
+      const double expected = theorem_radius(model, both, union_chain);
+      REQUIRE(radius <= expected * (1.0 + kTheoremExcess));
+      REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
+      ++node_pairs_checked;
+      leaf_pairs_checked += bvh.nodes()[a].is_leaf() || bvh.nodes()[b].is_leaf();
+    });
   }
   CHECK(nodes_checked > 20);
   CHECK(pairs_checked > 5);
@@ -717,28 +725,16 @@ int check_node_pair_unions(const sscc::SubspaceModel& model) {
   const sscc::SubspaceBvh bvh(model);
   const sscc::detail::NodeBoundaries boundaries(bvh);
   const sscc::detail::PatchRadii radii(bvh, boundaries);
-  const auto& nodes = bvh.nodes();
-  const int count = static_cast<int>(nodes.size());
-  std::vector<int> patch(count, -1);  // children follow their parent in the node array
-  for (int n = 0; n < count; ++n) {
-    const int parent = boundaries.parent(n);
-    patch[n] = parent >= 0 && patch[parent] >= 0 ? patch[parent] : radii.node_radius(n) > 0.0 ? n : -1;
-  }
   int checked = 0;
   std::vector<sscc::detail::DirectedEdge> sum;
-  for (int a = 0; a < count; ++a) {
-    for (int b = a + 1; b < count && patch[a] >= 0; ++b) {
-      const bool disjoint =
-          nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
-      if (!disjoint || patch[b] < 0 || !(radii.pair_radius(a, b) > radii.pair_radius(patch[a], patch[b]))) continue;
-      ++checked;
-      INFO("nodes " << a << " and " << b << ", radius " << radii.pair_radius(a, b));
-      CHECK(boundaries.simple_cycle(a));
-      CHECK(boundaries.simple_cycle(b));
-      REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), sum));
-      CHECK(sscc::detail::is_simple_cycle(sum));
-    }
-  }
+  for_each_own_node_pair(bvh, boundaries, radii, [&](int a, int b) {
+    ++checked;
+    INFO("nodes " << a << " and " << b << ", radius " << radii.pair_radius(a, b));
+    CHECK(boundaries.simple_cycle(a));
+    CHECK(boundaries.simple_cycle(b));
+    REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), sum));
+    CHECK(sscc::detail::is_simple_cycle(sum));
+  });
   return checked;
 }
 
