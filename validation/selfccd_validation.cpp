@@ -129,15 +129,17 @@ long run_selfccd_validation(const SelfCcdValidationOptions& o, std::ostream& out
       out << " certified_steps=" << certified;
     }
     if (!run.reports.empty()) {
-      double node_tests = 0.0, triangle_pairs = 0.0, cone_culled = 0.0;
+      double node_tests = 0.0, triangle_pairs = 0.0, cone_culled = 0.0, plane_culled = 0.0;
       for (const SelfCcdReport& report : run.reports) {
         node_tests += static_cast<double>(report.stats.box_tests) / o.steps;
         triangle_pairs += static_cast<double>(report.stats.triangle_pairs) / o.steps;
         cone_culled += static_cast<double>(report.stats.cone_culled) / o.steps;
+        plane_culled += static_cast<double>(report.stats.plane_culled) / o.steps;
       }
       std::snprintf(line, sizeof line,
-                    " node_tests_per_step=%.0f triangle_pairs_per_step=%.0f cone_culls_per_step=%.0f", node_tests,
-                    triangle_pairs, cone_culled);
+                    " node_tests_per_step=%.0f triangle_pairs_per_step=%.0f cone_culls_per_step=%.0f"
+                    " plane_culls_per_step=%.0f",
+                    node_tests, triangle_pairs, cone_culled, plane_culled);
       out << line;
     }
     out << '\n';

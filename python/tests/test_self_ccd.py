@@ -47,6 +47,7 @@ def test_normal_cones_on_and_off(sphere_bvh):
             np.testing.assert_array_equal(report.pairs, reference.pairs)
             np.testing.assert_array_equal(report.toi, reference.toi)
         assert plain.stats["cone_culled"] == 0 and plain_positions.stats["cone_culled"] == 0
+        assert plain.stats["plane_culled"] == 0 and plain_positions.stats["plane_culled"] == 0
         culled += cones.stats["cone_culled"] + positions.stats["cone_culled"]
     assert culled > 0
 

@@ -22,6 +22,7 @@
 #include "query/feature_hits.hpp"
 #include "query/patch_cull.hpp"
 #include "query/patch_radius.hpp"
+#include "query/separating_plane.hpp"
 #include "query/step_buffers.hpp"
 #include "query/sweep.hpp"
 #include "query/task_frontier.hpp"
@@ -188,6 +189,7 @@ class StepContext {
         subspace_boxes_(buffers_->subspace_boxes),
         node_sweeps_(buffers_->node_sweeps),
         triangle_sweeps_(buffers_->triangle_sweeps),
+        triangle_normals_(buffers_->triangle_normals),
         hits_(options.mode, &stats_.kernel_calls) {
     computed_.assign(mesh_.vertex_count(), shared ? 1 : 0);
     subspace_boxes_.reset(bvh.nodes().size());
@@ -207,6 +209,8 @@ class StepContext {
       return !displacement_ || displacement_->apart_fraction() <= kLargestApartFractionForCones;
     };
     const bool cones = options.use_normal_cones && separation_ == 0.0;
+    separating_planes_ = cones;
+    if (separating_planes_) triangle_normals_.reset(mesh_.triangle_count());
     // With coordinates, the cones bounded from the norm; the fraction of their radii above
     // it says how much they cull.
     const double radius_fraction = cones && culls.radii && q_hat0.size() > 0 ? culls.radii->fraction_above(s) : 0.0;
@@ -303,6 +307,10 @@ class StepContext {
     const int b = bvh_.triangle_order()[j];
     if (!considers(a, b) || !sweeps_may_touch(triangle_sweep(i), triangle_sweep(j), separation_)) return;
     ++stats_.triangle_pairs;
+    if (separating_planes_ && plane_separates(i, j)) {
+      ++stats_.plane_culled;
+      return;
+    }
     const Aabb box_a = hull(triangle_sweep(i).start, triangle_sweep(i).end);
     const Aabb box_b = hull(triangle_sweep(j).start, triangle_sweep(j).end);
     const Triangle& ta = mesh_.triangles()[a];
@@ -353,6 +361,25 @@ class StepContext {
         for (int c = node.first_child; c < node.first_child + node.child_count; ++c) sweep.merge(node_sweep(c));
       }
       return sweep;
+    });
+  }
+
+  /// Whether either triangle's plane (positions i and j of the BVH's order) separates the
+  /// two over the step (separating_plane.hpp).
+  bool plane_separates(int i, int j) {
+    const Triangle& a = mesh_.triangles()[bvh_.triangle_order()[i]];
+    const Triangle& b = mesh_.triangles()[bvh_.triangle_order()[j]];
+    if (!detail::within_plane_range(x0_, x1_, a, b)) return false;
+    return detail::plane_separates(x0_, x1_, a, triangle_normals(i), b) ||
+           detail::plane_separates(x0_, x1_, b, triangle_normals(j), a);
+  }
+
+  /// The normal's Bernstein coefficients of the triangle at position i of the BVH's order
+  /// (its vertices known: its sweep was formed first).
+  const detail::BernsteinNormals& triangle_normals(int i) {
+    return triangle_normals_.get(i, [&](int k) {
+      const Triangle& t = mesh_.triangles()[bvh_.triangle_order()[k]];
+      return detail::bernstein_normals(x0_[t[0]], x0_[t[1]], x0_[t[2]], x1_[t[0]], x1_[t[1]], x1_[t[2]]);
     });
   }
 
@@ -465,12 +492,14 @@ class StepContext {
   std::vector<char>& computed_;
   LazyBoxes<Aabb>& subspace_boxes_;
   LazyBoxes<Sweep>& node_sweeps_;
-  LazyBoxes<Sweep>& triangle_sweeps_;  // by position in the BVH's triangle order
-  SelfCcdStats stats_;                 // before hits_, which keeps a pointer into it
+  LazyBoxes<Sweep>& triangle_sweeps_;                      // by position in the BVH's triangle order
+  LazyBoxes<detail::BernsteinNormals>& triangle_normals_;  // likewise
+  SelfCcdStats stats_;                                     // before hits_, which keeps a pointer into it
   FeatureHits<FeatureContact> hits_;
   const detail::PatchRadii* radii_ = nullptr;               // null: no cones bounded from the norm
   const detail::PatchRadii* rest_patches_ = nullptr;        // the nodes proven at rest (null: unknown)
   bool node_pair_radii_ = false;                            // the radii of node pairs tested too
+  bool separating_planes_ = false;                          // the triangle pairs' plane cull
   std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no cones formed per step
   std::unique_ptr<detail::StepDisplacement> displacement_;  // null: no displacement cull
   const detail::FirstHitTask* cancel_ = nullptr;

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "query/normal_cone.hpp"
 #include "query/patch_cull.hpp"
 #include "query/sweep.hpp"
 #include "sscc/geometry/aabb.hpp"
@@ -23,8 +24,9 @@ struct StepBuffers {
   std::vector<char> computed;           // per vertex: its positions are known
   LazyBoxes<Aabb> subspace_boxes;
   LazyBoxes<Sweep> node_sweeps;
-  LazyBoxes<Sweep> triangle_sweeps;  // by position in the hierarchy's triangle order
-  PatchCull::Caches patch_cull;      // the cones formed from the positions
+  LazyBoxes<Sweep> triangle_sweeps;              // by position in the hierarchy's triangle order
+  LazyBoxes<BernsteinNormals> triangle_normals;  // likewise: the separating planes' normals
+  PatchCull::Caches patch_cull;                  // the cones formed from the positions
 };
 
 /// The buffers of finished queries, lent to the next ones: as many sets as queries ever ran

@@ -61,6 +61,7 @@ inline void add_counts(SelfCcdStats& a, const SelfCcdStats& b) {
   a.certified += b.certified;
   a.cone_culled += b.cone_culled;
   a.cone_radius_culled += b.cone_radius_culled;
+  a.plane_culled += b.plane_culled;
   a.displacement_culled += b.displacement_culled;
 }
 

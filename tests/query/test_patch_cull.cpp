@@ -123,7 +123,7 @@ std::vector<std::pair<int, int>> pairs_of(const sscc::SelfCcdReport& report) {
 
 TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive testing and brute force do",
           "[patch_cull][query]") {
-  long culled = 0, culled_with_certificates = 0;
+  long culled = 0, culled_with_certificates = 0, plane_culled = 0;
   int colliding_steps = 0, steps = 0;
   for (const Keyframes& c : cases()) {
     const sscc::SubspaceModel model = keyframe_model(c);
@@ -156,13 +156,16 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
       REQUIRE(defaults.pairs == exhaustive.pairs);
       REQUIRE(defaults.features == exhaustive.features);
       CHECK(traditional.stats.cone_culled == 0);
+      CHECK(traditional.stats.plane_culled == 0);
       culled += with_cones.stats.cone_culled;
+      plane_culled += with_cones.stats.plane_culled;
       culled_with_certificates += defaults.stats.cone_culled;
       colliding_steps += with_cones.collided();
       ++steps;
     }
   }
   CHECK(culled > 20);                   // the cones did cull
+  CHECK(plane_culled > 20);             // and so did the triangle pairs' separating planes
   CHECK(culled_with_certificates > 0);  // also beside the certificates
   CHECK(colliding_steps >= steps / 3);  // and the steps do collide
 }

@@ -34,6 +34,7 @@ struct SelfCcdTableRow {
   /// Node (box) tests per step.
   double traditional_nodes = 0.0, cones_nodes = 0.0, bounds_nodes = 0.0, both_nodes = 0.0, sscc_nodes = 0.0;
   double traditional_pairs = 0.0, cones_pairs = 0.0;  ///< triangle-pair tests per step
+  double cones_plane_culled = 0.0;                    ///< of the cones' pairs, those their planes separated, per step
   double root_radius = 0.0;
   int root_certified_steps = 0;  ///< steps SSCC decided by the root's certificate alone
   int colliding_steps = 0;

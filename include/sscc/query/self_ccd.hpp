@@ -112,7 +112,11 @@ struct SelfCcdOptions {
   /// on meshes whose patches proven at rest average 16 triangles or more (patch_cull.hpp,
   /// kSmallestMeanRestPatch), on the steps the certificates or the displacement bounds leave
   /// mostly to the traversal (src/query/self_ccd.cpp). With certificates, on the nodes they do
-  /// not cull. The README's self-CCD table gives the speed against the plain traversal.
+  /// not cull. With them, each triangle pair whose swept boxes meet is first tested against
+  /// both triangles' own planes: one triangle's vertices strictly on one side of the other's
+  /// moving plane for the whole step proves the pair apart (src/query/separating_plane.hpp),
+  /// before any feature's kernel. The README's self-CCD table gives the speed against the
+  /// plain traversal.
   bool use_normal_cones = true;
   /// Skip nodes, and pairs of nodes, whose triangles the step's deformation moves too little,
   /// relative to one another, to close the gaps they have at rest: bounded mode by mode from
@@ -152,6 +156,7 @@ struct SelfCcdStats {
   long certified = 0;            ///< nodes and sibling pairs culled by a certificate
   long cone_culled = 0;          ///< nodes and node pairs culled by the normal-cone test
   long cone_radius_culled = 0;   ///< of those, culled from the step's norm alone (patch radii)
+  long plane_culled = 0;         ///< of triangle_pairs, culled by a separating plane (normal cones' queries)
   long displacement_culled = 0;  ///< nodes and node pairs culled by the displacement bounds
   bool root_certified = false;   ///< the whole step decided by the root's certificate
   double seconds = 0.0;
