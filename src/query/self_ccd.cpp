@@ -299,7 +299,8 @@ class StepContext {
   /// whose swept boxes meet. Each feature pair is tested in one triangle pair only, its
   /// owner: the smallest considered pair of triangles containing it. Whenever the feature's
   /// boxes overlap, every triangle and node box containing them overlaps too, so the owner
-  /// is visited.
+  /// is visited. A pair its planes separate skips the features it owns: they are parts of its
+  /// two triangles, which never touch.
   /// The triangles at positions i and j of the BVH's order.
   void test_triangle_pair(int i, int j) {
     if (stopped()) return;
@@ -922,7 +923,9 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const auto start = std::chrono::steady_clock::now();
   const Eigen::VectorXd q_hat0 = bvh_->model().scaled_coordinates(q0);
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
-  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), options, StepCulls{},
+  SelfCcdOptions reference = options;  // no cull: nor the triangle pairs' separating planes
+  reference.use_normal_cones = false;
+  StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), reference, StepCulls{},
                       culls_->buffers(), true);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair

@@ -59,7 +59,8 @@ inline constexpr double kPlaneUnderflowAllowance = 1e-300;
 inline constexpr double kLargestPlaneCoordinate = 0x1p300;
 
 /// Whether every coordinate of triangles a and b, at both ends of the step, is within
-/// kLargestPlaneCoordinate: the precondition of plane_separates.
+/// kLargestPlaneCoordinate: the precondition of plane_separates. (A NaN coordinate may pass
+/// here, cwiseMax ignoring it; every comparison of plane_separates then fails: no cull.)
 inline bool within_plane_range(const Eigen::Vector3d* x0, const Eigen::Vector3d* x1, const Triangle& a,
                                const Triangle& b) {
   Eigen::Vector3d largest = Eigen::Vector3d::Zero();
@@ -75,6 +76,9 @@ struct BoundedDot {
 };
 
 inline BoundedDot bounded_dot(const Eigen::Vector3d& d, const Eigen::Vector3d& value, const Eigen::Vector3d& error) {
+#ifdef SSCC_MUTANT_PLANE_NO_BOUND
+  return {d.dot(value), 0.0};
+#endif
   return {d.dot(value),
           2.0 * (std::abs(d.x()) * error.x() + std::abs(d.y()) * error.y() + std::abs(d.z()) * error.z()) +
               kPlaneUnderflowAllowance};

@@ -150,6 +150,8 @@ TEST_CASE("normal cones: the culled traversal reports exactly what exhaustive te
       REQUIRE(with_cones.pairs == exhaustive.pairs);
       REQUIRE(with_cones.features == exhaustive.features);
       REQUIRE(traditional.pairs == exhaustive.pairs);
+      REQUIRE(with_cones.features == traditional.features);
+      CHECK(exhaustive.stats.plane_culled == 0);  // the reference culls nothing
       REQUIRE(pairs_of(with_cones) == brute_force_pairs(model, q0, q1));
       // The library's defaults: certificates and cones together.
       const sscc::SelfCcdReport defaults = certified.query(q0, q1);

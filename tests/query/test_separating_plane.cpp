@@ -103,7 +103,7 @@ TEST_CASE("separating plane: a certified side is the exact cubic's sign on the w
         large_certified += kind == 6;
         underflow_certified += kind == 7;
         REQUIRE((side > 0 ? all_positive : all_negative));
-        for (int j = 0; j <= 8; ++j) REQUIRE(sgn(exact_side(x, k, mpq_class(j, 8))) == side);
+        for (int j = 0; j <= 8; ++j) REQUIRE(sgn(exact_side(x, k, mpq_class(j) / 8)) == side);
       } else if (all_positive || all_negative) {
         ++refused_exact;
       }
@@ -163,4 +163,46 @@ TEST_CASE("separating plane: a triangle that turns over, or is degenerate, separ
   std::vector<Vector3d> flat = x0;
   flat[2] = Vector3d(0.5, 0, 0);
   CHECK_FALSE(sscc::detail::plane_separates(flat.data(), flat.data(), a, n(flat, flat), b));
+}
+
+TEST_CASE("separating plane: a vertex in the triangle's plane throughout, or reaching it at t = 1, is not certified",
+          "[separating_plane]") {
+  // Integer lattices times powers of two: b = a + 2u, c = a + 4w and p = a + u + w at both
+  // ends, each exact, so p(t) lies in the plane of (a, b, c)(t) for every t and the cubic is
+  // exactly 0, while its products (near 2^61 times the scale's cube) round.
+  std::mt19937_64 rng(47);
+  std::uniform_int_distribution<long> coordinate(-(1L << 22), 1L << 22), offset(-(1L << 20), 1L << 20);
+  const auto lattice = [&](std::uniform_int_distribution<long>& d) {
+    return Vector3d(static_cast<double>(d(rng)), static_cast<double>(d(rng)), static_cast<double>(d(rng)));
+  };
+  int static_rounded = 0;
+  for (const double scale : {0x1p-200, 0x1p-30, 1.0, 0x1p40, 0x1p250}) {
+    for (int trial = 0; trial < 400; ++trial) {
+      std::array<Vector3d, 4> ends[2];  // a, b, c, p
+      for (int end = 0; end < 2; ++end) {
+        const Vector3d a = lattice(coordinate), u = lattice(offset), w = lattice(offset);
+        ends[end] = {a, a + 2 * u, a + 4 * w, a + u + w};
+        for (Vector3d& x : ends[end]) x *= scale;
+      }
+      if (trial % 2 == 0) ends[1] = ends[0];  // at rest: the four coefficients one rounded value
+      const sscc::detail::BernsteinNormals n =
+          sscc::detail::bernstein_normals(ends[0][0], ends[0][1], ends[0][2], ends[1][0], ends[1][1], ends[1][2]);
+      INFO("scale " << scale << " trial " << trial);
+      REQUIRE(sscc::detail::certain_side(ends[0][3], ends[1][3], ends[0][0], ends[1][0], n) == 0);
+      const Vector3d d = ends[0][3] - ends[0][0];
+      static_rounded += trial % 2 == 0 && d.dot(n.value[0]) != 0.0;
+    }
+  }
+  CHECK(static_rounded > 100);  // the computed cubic was not 0: only the bound refused it
+
+  // B comes down onto A: its first vertex lands on A's interior at t = 1.
+  const sscc::Triangle a{0, 1, 2}, b{3, 4, 5};
+  const std::vector<Vector3d> x0 = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, 1}, {2, 0, 1.5}, {0, 2, 1.5}};
+  const std::vector<Vector3d> x1 = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, 0}, {2, 0, 0.5}, {0, 2, 0.5}};
+  const auto normals = [&](const sscc::Triangle& t) {
+    return sscc::detail::bernstein_normals(x0[t[0]], x0[t[1]], x0[t[2]], x1[t[0]], x1[t[1]], x1[t[2]]);
+  };
+  CHECK_FALSE(sscc::detail::plane_separates(x0.data(), x1.data(), a, normals(a), b));
+  CHECK_FALSE(sscc::detail::plane_separates(x0.data(), x1.data(), b, normals(b), a));
+  CHECK(sscc::validation::triangle_pair_first_contact(x0, x1, a, b) <= 1.0);
 }

@@ -224,7 +224,7 @@ class SelfCcd {
   SelfCcdReport query_discrete(const Eigen::VectorXd& q, const SelfCcdOptions& options = {}) const;
 
   /// Reference: every non-adjacent triangle pair, with the same leaf code (O(N^2)); no
-  /// certificates.
+  /// cull (certificates, cones and the triangle pairs' separating planes ignored).
   SelfCcdReport query_exhaustive(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1,
                                  const SelfCcdOptions& options = {}) const;
 
