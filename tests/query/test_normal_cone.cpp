@@ -8,21 +8,12 @@
 #include <random>
 
 #include "query/normal_cone.hpp"
+#include "support/exact_vectors.hpp"
 
 namespace {
 
 using Eigen::Vector3d;
-using Exact3 = std::array<mpq_class, 3>;
-
-Exact3 exact(const Vector3d& x) { return {mpq_class(x.x()), mpq_class(x.y()), mpq_class(x.z())}; }
-Exact3 minus(const Exact3& a, const Exact3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Exact3 cross(const Exact3& a, const Exact3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-mpq_class dot(const Exact3& a, const Exact3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Exact3 lerp(const Exact3& a, const Exact3& b, const mpq_class& t) {
-  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
-}
+using namespace sscc::test;  // the exact vectors (support/exact_vectors.hpp)
 
 /// d . n(t) in exact arithmetic for the positions as given, at rational t.
 mpq_class exact_normal_dot(const Vector3d& d, const std::array<Vector3d, 6>& x, const mpq_class& t) {
@@ -34,11 +25,9 @@ mpq_class exact_normal_dot(const Vector3d& d, const std::array<Vector3d, 6>& x, 
 
 /// The exact Bernstein coefficients d . N_k.
 std::array<mpq_class, 3> exact_coefficients(const Vector3d& d, const std::array<Vector3d, 6>& x) {
-  const Exact3 e1_0 = minus(exact(x[1]), exact(x[0])), e2_0 = minus(exact(x[2]), exact(x[0]));
-  const Exact3 e1_1 = minus(exact(x[4]), exact(x[3])), e2_1 = minus(exact(x[5]), exact(x[3]));
+  const std::array<Exact3, 3> n = sscc::test::exact_normal_coefficients(x[0], x[1], x[2], x[3], x[4], x[5]);
   const Exact3 D = exact(d);
-  return {dot(D, cross(e1_0, e2_0)), (dot(D, cross(e1_0, e2_1)) + dot(D, cross(e1_1, e2_0))) / 2,
-          dot(D, cross(e1_1, e2_1))};
+  return {dot(D, n[0]), dot(D, n[1]), dot(D, n[2])};
 }
 
 /// A triangle and its motion: random, nearly collinear (c on the line ab plus a tiny offset),
@@ -144,10 +133,7 @@ bool exactly_within(const sscc::detail::NormalCone& cone, const Exact3& n) {
 
 /// The exact Bernstein coefficient vectors of a moving triangle.
 std::array<Exact3, 3> exact_coefficient_vectors(const std::array<Vector3d, 6>& x) {
-  const Exact3 e1_0 = minus(exact(x[1]), exact(x[0])), e2_0 = minus(exact(x[2]), exact(x[0]));
-  const Exact3 e1_1 = minus(exact(x[4]), exact(x[3])), e2_1 = minus(exact(x[5]), exact(x[3]));
-  const Exact3 a = cross(e1_0, e2_1), b = cross(e1_1, e2_0);
-  return {cross(e1_0, e2_0), Exact3{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}, cross(e1_1, e2_1)};
+  return sscc::test::exact_normal_coefficients(x[0], x[1], x[2], x[3], x[4], x[5]);
 }
 
 }  // namespace

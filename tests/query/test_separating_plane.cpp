@@ -13,21 +13,12 @@
 
 #include "brute_force.hpp"
 #include "query/separating_plane.hpp"
+#include "support/exact_vectors.hpp"
 
 namespace {
 
 using Eigen::Vector3d;
-using Exact3 = std::array<mpq_class, 3>;
-
-Exact3 exact(const Vector3d& x) { return {mpq_class(x.x()), mpq_class(x.y()), mpq_class(x.z())}; }
-Exact3 minus(const Exact3& a, const Exact3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Exact3 cross(const Exact3& a, const Exact3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-mpq_class dot(const Exact3& a, const Exact3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Exact3 lerp(const Exact3& a, const Exact3& b, const mpq_class& t) {
-  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
-}
+using namespace sscc::test;  // the exact vectors (support/exact_vectors.hpp)
 
 /// A moving pair: x[0..2] triangle A at t = 0, x[3..5] B at t = 0, x[6..11] the same at t = 1.
 using MovingPair = std::array<Vector3d, 12>;
@@ -43,13 +34,9 @@ mpq_class exact_side(const MovingPair& x, int k, const mpq_class& t) {
 
 /// The exact Bernstein coefficients of that cubic (times 3 for the middle two).
 std::array<mpq_class, 4> exact_cubic(const MovingPair& x, int k) {
-  const Exact3 e1_0 = minus(exact(x[1]), exact(x[0])), e2_0 = minus(exact(x[2]), exact(x[0]));
-  const Exact3 e1_1 = minus(exact(x[7]), exact(x[6])), e2_1 = minus(exact(x[8]), exact(x[6]));
-  const Exact3 n0 = cross(e1_0, e2_0), n2 = cross(e1_1, e2_1);
-  const Exact3 m01 = cross(e1_0, e2_1), m10 = cross(e1_1, e2_0);
-  const Exact3 n1 = {(m01[0] + m10[0]) / 2, (m01[1] + m10[1]) / 2, (m01[2] + m10[2]) / 2};
+  const std::array<Exact3, 3> n = sscc::test::exact_normal_coefficients(x[0], x[1], x[2], x[6], x[7], x[8]);
   const Exact3 d0 = minus(exact(x[3 + k]), exact(x[0])), d1 = minus(exact(x[9 + k]), exact(x[6]));
-  return {dot(d0, n0), 2 * dot(d0, n1) + dot(d1, n0), dot(d0, n2) + 2 * dot(d1, n1), dot(d1, n2)};
+  return {dot(d0, n[0]), 2 * dot(d0, n[1]) + dot(d1, n[0]), dot(d0, n[2]) + 2 * dot(d1, n[1]), dot(d1, n[2])};
 }
 
 /// Pairs of the kinds the traversal meets and the hard ones: 0 B a little off A's plane and
