@@ -31,10 +31,11 @@ declare -A guard=(
   [DISPLACEMENT_NO_CENTRES]='[displacement]'       # two nodes' relative motion counted (displacement_bound.cpp)
   [AFFINE_NO_RESIDUAL]='[displacement]'            # what the affine fit leaves out counted (displacement_bound.cpp)
   [PLANE_NO_BOUND]='[separating_plane]'            # the separating planes' rounding bound (separating_plane.hpp)
+  [SWEEP_EITHER_END]='[sweep]'                     # apart at both ends of the step, not either (sweep.hpp)
 )
 order=(OWNS_ALWAYS_TRUE NO_SHIFT_MARGIN SEPARATION_3D INFLATE_RADII NO_CONSTANT_MODE_MULTIPLIER BOX_BOX_SINGLE_MODE
   ACCEPT_REFLECTIONS NO_POSITION_ROUNDING GRAM_PAD_FIXED DISPLACEMENT_NO_CENTRES
-  AFFINE_NO_RESIDUAL PLANE_NO_BOUND)
+  AFFINE_NO_RESIDUAL PLANE_NO_BOUND SWEEP_EITHER_END)
 if [ $# -gt 0 ]; then order=("$@"); fi
 for name in "${order[@]}"; do
   if [ -z "${guard[$name]+set}" ]; then echo "mutants: unknown mutant $name" >&2; exit 2; fi

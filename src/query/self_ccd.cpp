@@ -32,7 +32,6 @@ namespace sscc {
 
 namespace {
 
-using detail::apart_in_common_frame;
 using detail::box_at;
 using detail::descend_larger;
 using detail::EarliestPerKey;
@@ -43,7 +42,6 @@ using detail::LazyBoxes;
 using detail::overlap;
 using detail::Sweep;
 using detail::sweeps_may_touch;
-using detail::swept_overlap;
 
 /// Past this multiple of the root's certificate radius (s > ratio R_0) the certificates of
 /// its descendants rarely hold either (radii grow by about 1.6 per level on the meshes
@@ -292,7 +290,7 @@ class StepContext {
   /// the cheap test that prunes a leaf pair's triangle loops.
   bool triangle_meets_node(int i, int n) {
     if (options_.bounds == NodeBounds::kSubspace) return true;
-    return swept_overlap(triangle_sweep(i), node_sweep(n), separation_);
+    return sweeps_may_touch(triangle_sweep(i), node_sweep(n), separation_);
   }
 
   /// Kernels on the features of a considered triangle pair (neither adjacent nor excluded)

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "sscc/bvh/subspace_bvh.hpp"
-#include "sscc/ccd/moving_frame.hpp"
 #include "sscc/mesh/triangle_mesh.hpp"
 
 namespace sscc::detail {
@@ -86,8 +85,9 @@ inline bool overlap(const Aabb& a, const Aabb& b, double d) {
 }
 inline Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
 
-/// An object (triangle or node) over the step: its boxes at t = 0 and at t = 1. The box of
-/// the whole step is their hull.
+/// An object (triangle or node) over the step: its boxes at t = 0 and at t = 1. Every vertex
+/// moves linearly between its ends, so at time t the object lies in the box interpolated
+/// linearly between them: lo(t) = (1 - t) start.lo + t end.lo, and likewise hi(t).
 struct Sweep {
   Aabb start, end;
 
@@ -97,40 +97,28 @@ struct Sweep {
     start = hull(start, part.start);
     end = hull(end, part.end);
   }
-  double swept_lo(int k) const { return std::min(start.lo[k], end.lo[k]); }
-  double swept_hi(int k) const { return std::max(start.hi[k], end.hi[k]); }
-  /// The displacement of the box centre along axis k.
-  double motion(int k) const { return 0.5 * ((end.lo[k] + end.hi[k]) - (start.lo[k] + start.hi[k])); }
 };
 
-/// Whether the boxes of the whole step come within d.
-inline bool swept_overlap(const Sweep& a, const Sweep& b, double d) {
+/// Whether a stays below b along axis k, farther than d, for the whole step: the gap between
+/// b's interpolated lower face and a's upper face is linear in t, so beyond d at both ends it
+/// is beyond d throughout. The test compares the ends only (d = 0: no arithmetic, exact).
+inline bool below_throughout(const Sweep& a, const Sweep& b, int k, double d) {
+#ifdef SSCC_MUTANT_SWEEP_EITHER_END
+  if (d == 0.0) return a.start.hi[k] < b.start.lo[k] || a.end.hi[k] < b.end.lo[k];
+#endif
+  if (d == 0.0) return a.start.hi[k] < b.start.lo[k] && a.end.hi[k] < b.end.lo[k];
+  return b.start.lo[k] - a.start.hi[k] > d * kSeparationSlack && b.end.lo[k] - a.end.hi[k] > d * kSeparationSlack;
+}
+
+/// Whether two sweeps may come within d (0: touch): no axis along which one stays below the
+/// other throughout. Contact is unchanged by a translation linear in t applied to both, and so
+/// is this test (it subtracts positions at one time only): it is as tight as the swept boxes'
+/// test in every such moving frame, where neighbours that move alike sweep small boxes.
+inline bool sweeps_may_touch(const Sweep& a, const Sweep& b, double d) {
   for (int k = 0; k < 3; ++k) {
-    if (apart(a.swept_lo(k), a.swept_hi(k), b.swept_lo(k), b.swept_hi(k), d)) return false;
+    if (below_throughout(a, b, k, d) || below_throughout(b, a, k, d)) return false;
   }
   return true;
-}
-
-/// Contact (and distance) is unchanged when one translation, linear in t, moves both
-/// objects: with their mean displacement taken out, neighbours that move alike sweep small
-/// boxes. Farther than d apart there means farther than d apart (the shifted ends bounded
-/// whatever the rounding: ccd/moving_frame.hpp).
-inline bool apart_in_common_frame(const Sweep& a, const Sweep& b, double d) {
-  for (int k = 0; k < 3; ++k) {
-    const double common = 0.5 * (a.motion(k) + b.motion(k));
-    const double a_lo = std::min(a.start.lo[k], ccd::shifted_lower(a.end.lo[k], common));
-    const double a_hi = std::max(a.start.hi[k], ccd::shifted_upper(a.end.hi[k], common));
-    const double b_lo = std::min(b.start.lo[k], ccd::shifted_lower(b.end.lo[k], common));
-    const double b_hi = std::max(b.start.hi[k], ccd::shifted_upper(b.end.hi[k], common));
-    if (apart(a_lo, a_hi, b_lo, b_hi, d)) return true;
-  }
-  return false;
-}
-
-/// Whether two sweeps may come within d (0: touch): their step boxes do, also in their
-/// common frame.
-inline bool sweeps_may_touch(const Sweep& a, const Sweep& b, double d) {
-  return swept_overlap(a, b, d) && !apart_in_common_frame(a, b, d);
 }
 
 /// Calls test(i, j) for the triangle pairs of leaves a and b (positions in the hierarchy's

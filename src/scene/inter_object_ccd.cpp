@@ -51,8 +51,8 @@ void InterObjectCcd::traverse(int node_a, int node_b) {
   const SubspaceBvh::Node& nb = b_.bvh().nodes()[node_b];
   if (na.is_leaf() && nb.is_leaf()) {
     for_each_pruned_leaf_pair(
-        na, nb, [&](int i) { return swept_overlap(a_.triangle_sweep(i), b_.node_sweep(node_b), separation()); },
-        [&](int j) { return swept_overlap(b_.triangle_sweep(j), a_.node_sweep(node_a), separation()); },
+        na, nb, [&](int i) { return sweeps_may_touch(a_.triangle_sweep(i), b_.node_sweep(node_b), separation()); },
+        [&](int j) { return sweeps_may_touch(b_.triangle_sweep(j), a_.node_sweep(node_a), separation()); },
         [&](int i, int j) { test_triangle_pair(i, j); });
     return;
   }
