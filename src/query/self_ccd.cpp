@@ -241,9 +241,8 @@ class StepContext {
     std::fill(computed_.begin(), computed_.end(), 1);
   }
 
-  /// Whether two nodes may hold touching triangles. With refitted boxes the test is also
-  /// made in the nodes' common moving frame: their mean displacement taken out of both
-  /// (contact is unchanged by a translation, linear in t, applied to both).
+  /// Whether two nodes may hold touching triangles: with refitted boxes, their boxes at both
+  /// ends of the step, interpolated (sweep.hpp); with subspace boxes, the boxes of the step.
   bool nodes_overlap(int a, int b) {
     ++stats_.box_tests;
     if (options_.bounds == NodeBounds::kSubspace) {

@@ -1,6 +1,6 @@
-// Swept boxes over one time step, shared by the self and inter-object queries: an object's
-// boxes at t = 0 and t = 1, their overlap tests (also in the two objects' common moving
-// frame), and per-query caches. Private to the library.
+// Boxes over one time step, shared by the self and inter-object queries: an object's boxes
+// at t = 0 and t = 1, the test of two of them interpolated over the step, and per-query
+// caches. Private to the library.
 #pragma once
 
 #include <Eigen/Core>

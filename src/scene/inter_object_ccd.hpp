@@ -1,5 +1,5 @@
 // Continuous collision between two scene objects over one step: a swept-box traversal of
-// the two hierarchies in world space (also in each node pair's common moving frame), then
+// the two hierarchies in world space (boxes at both ends, interpolated: sweep.hpp), then
 // the exact kernels on the features of triangle pairs whose sweeps meet. Every triangle
 // pair of two objects is non-adjacent; each feature pair is tested once, in its owner: the
 // pair of the first triangles (in mesh order) around its two features. Private to the
