@@ -64,13 +64,14 @@ class LazyBoxes {
 };
 
 /// Relative slack on a gap compared with a minimum separation d > 0: the gap's subtraction
-/// rounds (relative error 2^-53), so only a gap beyond d (1 + 1e-12) proves the distance
-/// exceeds d. Smaller could cull a pair exactly d apart; larger only culls less.
+/// rounds (relative error 2^-53); rounding is monotone, so a computed gap above d already
+/// proves the exact one above d, and the factor is a margin beyond that. Below 1 would cull
+/// pairs exactly d apart; larger only culls less.
 inline constexpr double kSeparationSlack = 1.0 + 1e-12;
 
 /// Whether the intervals [a_lo, a_hi] and [b_lo, b_hi] stay farther apart than d (d = 0:
-/// disjoint; touching intervals are not apart). Every cull of the queries is a set of such
-/// tests, so a minimum separation widens them all.
+/// disjoint; touching intervals are not apart): the boxes' test, and the feature boxes' before
+/// the kernels.
 inline bool apart(double a_lo, double a_hi, double b_lo, double b_hi, double d) {
   if (d == 0.0) return a_hi < b_lo || b_hi < a_lo;
   return b_lo - a_hi > d * kSeparationSlack || a_lo - b_hi > d * kSeparationSlack;
@@ -85,9 +86,10 @@ inline bool overlap(const Aabb& a, const Aabb& b, double d) {
 }
 inline Aabb hull(const Aabb& a, const Aabb& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
 
-/// An object (triangle or node) over the step: its boxes at t = 0 and at t = 1. Every vertex
-/// moves linearly between its ends, so at time t the object lies in the box interpolated
-/// linearly between them: lo(t) = (1 - t) start.lo + t end.lo, and likewise hi(t).
+/// An object (triangle or node) over the step: start bounds its vertices at t = 0 and end
+/// those at t = 1, each on its own. Every vertex moves linearly between its ends (the path the
+/// kernels take: in a scene, linear in world coordinates), so at time t the object lies in the
+/// box interpolated linearly between them: lo(t) = (1 - t) start.lo + t end.lo, and likewise hi(t).
 struct Sweep {
   Aabb start, end;
 
@@ -111,9 +113,9 @@ inline bool below_throughout(const Sweep& a, const Sweep& b, int k, double d) {
 }
 
 /// Whether two sweeps may come within d (0: touch): no axis along which one stays below the
-/// other throughout. Contact is unchanged by a translation linear in t applied to both, and so
-/// is this test (it subtracts positions at one time only): it is as tight as the swept boxes'
-/// test in every such moving frame, where neighbours that move alike sweep small boxes.
+/// other throughout. At least as tight as the swept boxes' test (the hull of both ends) in
+/// every frame moving linearly in t, where neighbours that move alike sweep small boxes: it is
+/// that test in the best such frame, chosen per axis.
 inline bool sweeps_may_touch(const Sweep& a, const Sweep& b, double d) {
   for (int k = 0; k < 3; ++k) {
     if (below_throughout(a, b, k, d) || below_throughout(b, a, k, d)) return false;

@@ -112,7 +112,7 @@ struct SelfCcdOptions {
   /// on meshes whose patches proven at rest average 16 triangles or more (patch_cull.hpp,
   /// kSmallestMeanRestPatch), on the steps the certificates or the displacement bounds leave
   /// mostly to the traversal (src/query/self_ccd.cpp). With certificates, on the nodes they do
-  /// not cull. With them, each triangle pair whose swept boxes meet is first tested against
+  /// not cull. With them, each triangle pair whose boxes may meet is first tested against
   /// both triangles' own planes: one triangle's vertices strictly on one side of the other's
   /// moving plane for the whole step proves the pair apart (src/query/separating_plane.hpp),
   /// before any feature's kernel. The README's self-CCD table gives the speed against the
@@ -150,7 +150,7 @@ inline void set_traditional(SelfCcdOptions& options) {
 struct SelfCcdStats {
   long nodes_visited = 0;
   long box_tests = 0;
-  long triangle_pairs = 0;  ///< non-adjacent pairs whose swept boxes overlapped
+  long triangle_pairs = 0;  ///< non-adjacent pairs whose boxes over the step may meet
   long kernel_calls = 0;
   long vertices_computed = 0;
   long certified = 0;            ///< nodes and sibling pairs culled by a certificate
