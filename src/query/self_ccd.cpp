@@ -296,8 +296,9 @@ class StepContext {
   /// whose sweeps may touch (sweep.hpp). Each feature pair is tested in one triangle pair
   /// only, its owner: the smallest considered pair of triangles containing it. Whenever the
   /// features come within the separation at some t, so do the interpolated boxes of every
-  /// triangle and node containing them, so the owner is visited. A pair its planes separate skips the features it owns:
-  /// they are parts of its two triangles, which never touch. The triangles at positions i and j of the BVH's order.
+  /// triangle and node containing them, so the owner is visited. A pair its planes separate
+  /// skips the features it owns: they are parts of its two triangles, which never touch.
+  /// The triangles at positions i and j of the BVH's order.
   void test_triangle_pair(int i, int j) {
     if (stopped()) return;
     const int a = bvh_.triangle_order()[i];

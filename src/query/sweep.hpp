@@ -69,12 +69,18 @@ class LazyBoxes {
 /// pairs exactly d apart; larger only culls less.
 inline constexpr double kSeparationSlack = 1.0 + 1e-12;
 
-/// Whether the intervals [a_lo, a_hi] and [b_lo, b_hi] stay farther apart than d (d = 0:
-/// disjoint; touching intervals are not apart): the boxes' test, and the feature boxes' before
-/// the kernels.
+/// Whether an interval ending at `upper_end` lies below one starting at `lower_end` by more
+/// than d (d = 0: strictly below; touching intervals are not apart). Every box test here is
+/// made of these.
+inline bool below_by_more_than(double upper_end, double lower_end, double d) {
+  if (d == 0.0) return upper_end < lower_end;
+  return lower_end - upper_end > d * kSeparationSlack;
+}
+
+/// Whether the intervals [a_lo, a_hi] and [b_lo, b_hi] stay farther apart than d: the boxes'
+/// test, and the feature boxes' before the kernels.
 inline bool apart(double a_lo, double a_hi, double b_lo, double b_hi, double d) {
-  if (d == 0.0) return a_hi < b_lo || b_hi < a_lo;
-  return b_lo - a_hi > d * kSeparationSlack || a_lo - b_hi > d * kSeparationSlack;
+  return below_by_more_than(a_hi, b_lo, d) || below_by_more_than(b_hi, a_lo, d);
 }
 
 /// Whether two boxes come within d of each other along every axis.
@@ -106,10 +112,9 @@ struct Sweep {
 /// is beyond d throughout. The test compares the ends only (d = 0: no arithmetic, exact).
 inline bool below_throughout(const Sweep& a, const Sweep& b, int k, double d) {
 #ifdef SSCC_MUTANT_SWEEP_EITHER_END
-  if (d == 0.0) return a.start.hi[k] < b.start.lo[k] || a.end.hi[k] < b.end.lo[k];
+  return below_by_more_than(a.start.hi[k], b.start.lo[k], d) || below_by_more_than(a.end.hi[k], b.end.lo[k], d);
 #endif
-  if (d == 0.0) return a.start.hi[k] < b.start.lo[k] && a.end.hi[k] < b.end.lo[k];
-  return b.start.lo[k] - a.start.hi[k] > d * kSeparationSlack && b.end.lo[k] - a.end.hi[k] > d * kSeparationSlack;
+  return below_by_more_than(a.start.hi[k], b.start.lo[k], d) && below_by_more_than(a.end.hi[k], b.end.lo[k], d);
 }
 
 /// Whether two sweeps may come within d (0: touch): no axis along which one stays below the
