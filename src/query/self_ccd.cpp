@@ -218,16 +218,16 @@ class StepContext {
     if (separating_planes_) triangle_normals_.reset(mesh_.triangle_count());
     // With coordinates, the cones bounded from the norm; the fraction of their radii above
     // it says how much they cull.
-    const double radius_fraction = cones && culls.radii && q_hat0.size() > 0 ? culls.radii->fraction_above(s) : 0.0;
+    const bool radii_from_norm = cones && culls.radii && q_hat0.size() > 0;
+    const double radius_fraction = radii_from_norm ? culls.radii->fraction_above(s) : 0.0;
     if (radius_fraction >= kSmallestRadiusFractionForCones) {
       radii_ = culls.radii;
       node_pair_radii_ = radii_->node_pair_fraction_above(s) >= kSmallestNodePairFractionForCones;
     }
     rest_patches_ = cones ? culls.radii : nullptr;
-    const double patch_fraction =
-        cones && culls.radii && q_hat0.size() > 0 ? culls.radii->patch_fraction_above(s) : 0.0;
-    const bool formed_cones_pay = !culls.radii || q_hat0.size() == 0 ||
-                                  (patch_fraction > 0.0 && patch_fraction <= kLargestPatchFractionForFormedCones);
+    const double patch_fraction = radii_from_norm ? culls.radii->patch_fraction_above(s) : 0.0;
+    const bool formed_cones_pay =
+        !radii_from_norm || (patch_fraction > 0.0 && patch_fraction <= kLargestPatchFractionForFormedCones);
     if (culls.boundaries && cones && cones_pay() && formed_cones_pay) {
       patch_cull_ = std::make_unique<detail::PatchCull>(
           bvh, *culls.boundaries, shared ? shared->x0 : own_x0_, shared ? shared->x1 : own_x1_,
