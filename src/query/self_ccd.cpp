@@ -553,16 +553,19 @@ class Traversal {
     }
     for (int c = node.first_child; c < node.first_child + node.child_count; ++c) intra(c);
     for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
-      for (int d = c + 1; d < node.first_child + node.child_count; ++d) inter(c, d);
+      for (int d = c + 1; d < node.first_child + node.child_count; ++d) {
+        // Sibling pairs have certificates; the pairs inter() descends to are never siblings.
+        if (certificates_ && s_ < certificates_->sibling_radius(c, d)) {
+          ++context_.stats().certified;
+          continue;
+        }
+        inter(c, d);
+      }
     }
   }
 
   void inter(int a, int b) {
     if (context_.stopped()) return;
-    if (certificates_ && s_ < certificates_->sibling_radius(a, b)) {
-      ++context_.stats().certified;
-      return;
-    }
     if (frontier_ && frontier_->take(a, b)) return;
     if (!context_.nodes_overlap(a, b)) return;
     if (context_.nodes_held_apart(a, b)) {
