@@ -163,6 +163,7 @@ std::pair<std::string, long> self_ccd_section(const BenchOptions& o, std::ostrea
   const std::string dir = o.meshes_dir.empty() ? data_dir() + "/../../shared/data/meshes" : o.meshes_dir;
   SelfCcdTableOptions table;
   table.steps = o.table_steps;
+  table.repeats = o.table_repeats;
   table.seed = o.seed;
   table.cache_dir = o.cache_dir;
   if (fs::is_directory(dir)) {
@@ -181,7 +182,8 @@ std::pair<std::string, long> self_ccd_section(const BenchOptions& o, std::ostrea
   std::ostringstream md;
   md << "\nSelf-CCD per mesh (" << table.basis << ", random trajectories, " << table.steps
      << " steps per row, FCL on the first " << std::min(table.fcl_steps, table.steps)
-     << "; one thread; mean ms per step; traditional: swept boxes only, cones: with the normal-cone culls, "
+     << "; one thread; mean ms per step, each step's time the median of " << std::max(1, table.repeats)
+     << " runs of each query (FCL: one); traditional: swept boxes only, cones: with the normal-cone culls, "
         "bounds: with the displacement bounds, cones + bounds: with both (the library's defaults without "
         "certificates), SSCC: the certificates (computed once per mesh, default parameters), the library's defaults; "
         "the culls' data "

@@ -12,6 +12,7 @@
 #include "model_loading.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/query/self_ccd.hpp"
+#include "statistics.hpp"
 #include "trajectory.hpp"
 
 namespace sscc::validation {
@@ -73,13 +74,20 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
       const std::array<double*, kMethods> nodes{&row.traditional_nodes, &row.cones_nodes, &row.bounds_nodes,
                                                 &row.both_nodes, &row.sscc_nodes};
       for (int k = 0; k < o.steps; ++k) {
-        // Rotate which runs first, so that none always finds the caches warm.
+        // Each method's time on a step is the median of its repeats; the order rotates with
+        // the step and the repeat, so that none always finds the caches warm.
         std::array<SelfCcdReport, kMethods> reports;
-        for (int i = 0; i < kMethods; ++i) {
-          const int m = (i + k) % kMethods;
-          const auto start = std::chrono::steady_clock::now();
-          reports[m] = ccd.query(q[k], q[k + 1], options[m]);
-          *milliseconds[m] += milliseconds_since(start) / o.steps;
+        std::array<std::vector<double>, kMethods> repeats;
+        for (int repeat = 0; repeat < std::max(1, o.repeats); ++repeat) {
+          for (int i = 0; i < kMethods; ++i) {
+            const int m = (i + k + repeat) % kMethods;
+            const auto start = std::chrono::steady_clock::now();
+            reports[m] = ccd.query(q[k], q[k + 1], options[m]);
+            repeats[m].push_back(milliseconds_since(start));
+          }
+        }
+        for (int m = 0; m < kMethods; ++m) {
+          *milliseconds[m] += median(repeats[m]) / o.steps;
           *nodes[m] += static_cast<double>(reports[m].stats.box_tests) / o.steps;
         }
         row.traditional_pairs += static_cast<double>(reports[kTraditional].stats.triangle_pairs) / o.steps;

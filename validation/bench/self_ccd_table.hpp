@@ -3,7 +3,7 @@
 // the query with normal cones, with the displacement bounds, with both (the library's defaults
 // without certificates), SSCC (the certificates, computed once per mesh and cached) and FCL's
 // traversal, one thread each, on the same steps; time, node tests and triangle-pair tests per
-// step, and whether the queries agree.
+// step (the median of a few repeats of each), and whether the queries agree.
 // Step counts are small so that the table takes minutes (FCL is slow on the 75k bunny).
 #pragma once
 
@@ -18,6 +18,7 @@ struct SelfCcdTableOptions {
   std::vector<std::string> meshes;  ///< mesh files
   std::vector<double> amplitudes = {0.01, 0.05, 0.2};
   int steps = 3;      ///< per mesh and amplitude, for traditional and cones
+  int repeats = 3;    ///< runs of each method per step, the median timed (the machines are noisy)
   int fcl_steps = 2;  ///< the first steps of the same trajectory, for FCL
   std::string basis = "polynomial:27";
   std::uint64_t seed = 1;

@@ -117,6 +117,7 @@ const char* kUsage =
     "            (certificates cached in --cache) and FCL on every mesh of\n"
     "            --meshes DIR (default ../shared/data/meshes) at amplitudes 0.01, 0.05, 0.2\n"
     "            --table-steps N        steps per mesh and amplitude (default 3)\n"
+    "            --table-repeats R      runs of each query per step, the median timed (default 3)\n"
     "            --only self-ccd        run only that table\n"
     "  decimate  quadric edge collapse of a mesh to a triangle count (OpenMesh)\n"
     "            --mesh FILE --triangles N (default 15000) --output FILE.off\n"
@@ -437,9 +438,10 @@ int run_demo(const std::vector<std::string>& args) {
 }
 
 int run_bench(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(
-      args, {"--steps", "--seed", "--cache", "--kernel-queries", "--output", "--meshes", "--table-steps", "--only"},
-      "bench");
+  const Flags flags = parse_flags(args,
+                                  {"--steps", "--seed", "--cache", "--kernel-queries", "--output", "--meshes",
+                                   "--table-steps", "--table-repeats", "--only"},
+                                  "bench");
   sscc::validation::BenchOptions options;
   if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
   if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
@@ -448,6 +450,9 @@ int run_bench(const std::vector<std::string>& args) {
   if (flags.has("--output")) options.output_dir = flags.text("--output");
   if (flags.has("--meshes")) options.meshes_dir = flags.text("--meshes");
   if (flags.has("--table-steps")) options.table_steps = flags.number<int>("--table-steps");
+  if (flags.has("--table-repeats")) options.table_repeats = flags.number<int>("--table-repeats");
+  if (options.table_steps <= 0) usage_error("--table-steps must be positive");
+  if (options.table_repeats <= 0) usage_error("--table-repeats must be positive");
   if (flags.has("--only")) {
     if (flags.text("--only") != "self-ccd") usage_error("--only takes self-ccd");
     options.self_ccd_table_only = true;
