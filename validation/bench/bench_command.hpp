@@ -32,7 +32,7 @@ struct BenchOptions {
   long kernel_queries = 20000;  ///< per kind, for the tolerance sweep
   std::string meshes_dir;       ///< the self-CCD table's meshes; "" is ../shared/data/meshes
   int table_steps = 3;          ///< per mesh and amplitude in the self-CCD table
-  int table_repeats = 3;        ///< runs of each query per step in the self-CCD table, the median timed
+  int table_repeats = 5;        ///< timed runs of each query per step in the self-CCD table (median kept)
   bool self_ccd_table_only = false;
 };
 

@@ -74,13 +74,16 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
       const std::array<double*, kMethods> nodes{&row.traditional_nodes, &row.cones_nodes, &row.bounds_nodes,
                                                 &row.both_nodes, &row.sscc_nodes};
       for (int k = 0; k < o.steps; ++k) {
-        // Each method's time on a step is the median of its repeats; the order rotates with
-        // the step and the repeat, so that none always finds the caches warm.
+        // Each method's time on a step is the median of its repeats. A repeat runs every method
+        // twice back to back and times the second run (warm caches, as FCL's steps run back
+        // to back); the repeats interleave the methods, so that a drift of this machine's
+        // speed weighs on all of them alike, and the order rotates with the step.
         std::array<SelfCcdReport, kMethods> reports;
         std::array<std::vector<double>, kMethods> repeats;
         for (int repeat = 0; repeat < std::max(1, o.repeats); ++repeat) {
           for (int i = 0; i < kMethods; ++i) {
-            const int m = (i + k + repeat) % kMethods;
+            const int m = (i + k) % kMethods;
+            ccd.query(q[k], q[k + 1], options[m]);
             const auto start = std::chrono::steady_clock::now();
             reports[m] = ccd.query(q[k], q[k + 1], options[m]);
             repeats[m].push_back(milliseconds_since(start));

@@ -18,7 +18,7 @@ struct SelfCcdTableOptions {
   std::vector<std::string> meshes;  ///< mesh files
   std::vector<double> amplitudes = {0.01, 0.05, 0.2};
   int steps = 3;      ///< per mesh and amplitude, for traditional and cones
-  int repeats = 3;    ///< runs of each method per step, the median timed (the machines are noisy)
+  int repeats = 5;    ///< timed runs of each method per step, each after an untimed one; the median is kept
   int fcl_steps = 2;  ///< the first steps of the same trajectory, for FCL
   std::string basis = "polynomial:27";
   std::uint64_t seed = 1;
