@@ -525,6 +525,13 @@ int run_selfccd(const std::vector<std::string>& args) {
   if (flags.has("--methods")) options.methods = split_list(flags.text("--methods"));
   if (options.steps <= 0) usage_error("--steps must be positive");
   if (options.methods.empty()) usage_error("--methods needs at least one method");
+  for (std::size_t i = 0; i < options.methods.size(); ++i) {
+    // Each method's figures are kept once: a repeat would add its times to the first run's.
+    if (std::find(options.methods.begin(), options.methods.begin() + i, options.methods[i]) !=
+        options.methods.begin() + i) {
+      usage_error("--methods lists '" + options.methods[i] + "' twice");
+    }
+  }
   return run_report(options, flags.quiet, sscc::validation::run_selfccd_validation, "selfccd");
 }
 
