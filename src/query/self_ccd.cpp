@@ -554,6 +554,7 @@ class Traversal {
     for (int c = node.first_child; c < node.first_child + node.child_count; ++c) intra(c);
     for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
       for (int d = c + 1; d < node.first_child + node.child_count; ++d) {
+        if (context_.stopped()) return;
         // Sibling pairs have certificates; the pairs inter() descends to are never siblings.
         if (certificates_ && s_ < certificates_->sibling_radius(c, d)) {
           ++context_.stats().certified;

@@ -127,7 +127,7 @@ std::string self_ccd_table_markdown(const std::vector<SelfCcdTableRow>& rows) {
   for (const SelfCcdTableRow& r : rows) {
     md << "| " << r.mesh << " | " << r.triangles << " | " << r.amplitude << " | " << format("%.2f ms", r.traditional_ms)
        << " | " << format("%.2f ms", r.cones_ms) << " | " << format("%.2f ms", r.bounds_ms) << " | "
-       << format("%.2f ms", r.both_ms) << " | " << format("%.3f ms", r.sscc_ms) << " | " << format("%.1f ms", r.fcl_ms)
+       << format("%.2f ms", r.both_ms) << " | " << format("%.4f ms", r.sscc_ms) << " | " << format("%.1f ms", r.fcl_ms)
        << " | " << format("%.2fx", r.traditional_ms / r.cones_ms) << " | " << format("%.2fx", r.cones_ms / r.sscc_ms)
        << " | " << format("%.2fx", r.traditional_ms / r.sscc_ms) << " | " << format("%.1fx", r.fcl_ms / r.cones_ms)
        << " | " << format("%.1fx", r.fcl_ms / r.both_ms) << " | " << r.root_certified_steps << " | "
