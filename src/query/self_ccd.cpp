@@ -26,6 +26,7 @@
 #include "query/step_buffers.hpp"
 #include "query/sweep.hpp"
 #include "query/task_frontier.hpp"
+#include "query/unconsidered_leaf_pairs.hpp"
 #include "sscc/ccd/kernels.hpp"
 
 namespace sscc {
@@ -163,6 +164,7 @@ struct StepCulls {
   const detail::NodeBoundaries* boundaries = nullptr;  // the normal cones formed per step
   const detail::PatchRadii* radii = nullptr;           // the normal cones bounded from the norm
   const detail::DisplacementBounds* displacement = nullptr;
+  const detail::UnconsideredLeafPairs* unconsidered = nullptr;  // leaf pairs skipped with the cones
 };
 
 /// What every query needs per call: the positions computed so far, the feature results,
@@ -195,7 +197,8 @@ class StepContext {
         node_sweeps_(buffers_->node_sweeps),
         triangle_sweeps_(buffers_->triangle_sweeps),
         triangle_normals_(buffers_->triangle_normals),
-        hits_(options.mode, &stats_.kernel_calls) {
+        hits_(options.mode, &stats_.kernel_calls),
+        unconsidered_(culls.unconsidered) {
     computed_.assign(mesh_.vertex_count(), shared ? 1 : 0);
     subspace_boxes_.reset(bvh.nodes().size());
     node_sweeps_.reset(bvh.nodes().size());
@@ -241,8 +244,8 @@ class StepContext {
   /// Given positions at both ends (the traditional query on poses the subspace does not
   /// hold): every vertex known, boxes refitted.
   StepContext(const SubspaceBvh& bvh, const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
-              const SelfCcdOptions& options, const detail::NodeBoundaries* boundaries, detail::StepBufferPool& pool)
-      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, StepCulls{boundaries}, pool, false) {
+              const SelfCcdOptions& options, const StepCulls& culls, detail::StepBufferPool& pool)
+      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, culls, pool, false) {
     own_x0_.assign(x0.begin(), x0.end());  // into the lent buffers' storage
     own_x1_.assign(x1.begin(), x1.end());
     x0_ = own_x0_.data();
@@ -276,6 +279,8 @@ class StepContext {
     }
     return patch_cull_ && patch_cull_->cannot_touch(a, b);
   }
+  /// Whether a and b are leaves holding no considered triangle pair (unconsidered_leaf_pairs.hpp).
+  bool leaves_hold_no_considered_pair(int a, int b) const { return unconsidered_ && unconsidered_->contains(a, b); }
   /// The displacement cull (displacement_bound.hpp) of a node, and of two nodes.
   bool node_held_apart(int n) { return displacement_ && displacement_->node_apart(n); }
   bool nodes_held_apart(int a, int b) { return displacement_ && displacement_->nodes_apart(a, b); }
@@ -509,6 +514,7 @@ class StepContext {
   bool separating_planes_ = false;                          // the triangle pairs' plane cull
   std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no cones formed per step
   std::unique_ptr<detail::StepDisplacement> displacement_;  // null: no displacement cull
+  const detail::UnconsideredLeafPairs* unconsidered_;       // null: no leaf pairs skipped
   const detail::FirstHitTask* cancel_ = nullptr;
   int task_ = 0;
 };
@@ -568,6 +574,7 @@ class Traversal {
   void inter(int a, int b) {
     if (context_.stopped()) return;
     if (frontier_ && frontier_->take(a, b)) return;
+    if (context_.leaves_hold_no_considered_pair(a, b)) return;
     if (!context_.nodes_overlap(a, b)) return;
     if (context_.nodes_held_apart(a, b)) {
       ++context_.stats().displacement_culled;
@@ -660,6 +667,7 @@ class DiscreteContext {
   bool node_cannot_self_touch(int) const { return false; }  // the cones are a continuous cull
   bool nodes_cannot_touch(int, int) const { return false; }
   bool node_held_apart(int) const { return false; }  // bounds over a step; the discrete query has certificates
+  bool leaves_hold_no_considered_pair(int, int) const { return false; }
   bool nodes_held_apart(int, int) const { return false; }
   bool triangle_meets_node(int, int) const { return true; }
 
@@ -759,6 +767,13 @@ class CullData {
     std::call_once(displacement_once_, [&] { displacement_ = std::make_unique<const DisplacementBounds>(*bvh_); });
     return displacement_.get();
   }
+  /// Null when the query does not use the cones (the leaf pairs are skipped with them, so
+  /// that the traditional query stays the paper's).
+  const UnconsideredLeafPairs* unconsidered_leaf_pairs(const SelfCcdOptions& options) {
+    if (!options.use_normal_cones) return nullptr;
+    std::call_once(unconsidered_once_, [&] { unconsidered_ = std::make_unique<const UnconsideredLeafPairs>(*bvh_); });
+    return unconsidered_.get();
+  }
   /// The buffers the queries' contexts lend (step_buffers.hpp).
   StepBufferPool& buffers() { return buffers_; }
 
@@ -772,12 +787,13 @@ class CullData {
 
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
-  std::once_flag boundaries_once_, displacement_once_, radii_once_, patch_radii_once_;
+  std::once_flag boundaries_once_, displacement_once_, radii_once_, patch_radii_once_, unconsidered_once_;
   std::vector<double> radii_;  // sorted
   std::unique_ptr<const NodeBoundaries> boundaries_;
   bool cones_pay_ = false;
   std::unique_ptr<const DisplacementBounds> displacement_;
   std::unique_ptr<const PatchRadii> patch_radii_;
+  std::unique_ptr<const UnconsideredLeafPairs> unconsidered_;
   StepBufferPool buffers_;
 };
 
@@ -846,6 +862,7 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
                          ? nullptr
                          : culls_->boundaries(options);
   culls.radii = culls_->radii(options);
+  culls.unconsidered = culls_->unconsidered_leaf_pairs(options);
   if (threads > 1) {
     // Far past the root's certificate (threads > 1 only there) nearly every vertex is
     // reached: computed once, a share per thread, instead of once by every thread's context.
@@ -868,6 +885,7 @@ void SelfCcd::prepare(const SelfCcdOptions& options) const {
   culls_->boundaries(options);
   culls_->radii(options);
   culls_->displacement(options, certificates != nullptr);
+  culls_->unconsidered_leaf_pairs(options);
   if (certificates) culls_->certified_fraction(0.0);  // query() asks for it with any certificates
 }
 
@@ -905,14 +923,17 @@ SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, c
   }
   SelfCcdOptions refit = options;
   refit.bounds = NodeBounds::kRefit;
+  StepCulls culls;
+  culls.boundaries = culls_->boundaries(options);
+  culls.unconsidered = culls_->unconsidered_leaf_pairs(options);
   const int threads = detail::resolve_threads(options.threads);
   if (threads > 1) {
     const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, x0, x1, refit, culls_->boundaries(options), culls_->buffers());
+      return std::make_unique<StepContext>(*bvh_, x0, x1, refit, culls, culls_->buffers());
     };
     return parallel_traversal(*bvh_, nullptr, 0.0, refit, threads, make_context, start);
   }
-  StepContext context(*bvh_, x0, x1, refit, culls_->boundaries(options), culls_->buffers());
+  StepContext context(*bvh_, x0, x1, refit, culls, culls_->buffers());
   Traversal<StepContext>(*bvh_, context, nullptr, 0.0).intra(0);
   return context.finish(start);
 }
