@@ -115,8 +115,9 @@ struct SelfCcdOptions {
   /// not cull. With them, each triangle pair whose boxes may meet is first tested against
   /// both triangles' own planes: one triangle's vertices strictly on one side of the other's
   /// moving plane for the whole step proves the pair apart (src/query/separating_plane.hpp),
-  /// before any feature's kernel. The README's self-CCD table gives the speed against the
-  /// plain traversal.
+  /// before any feature's kernel, and pairs of leaves that hold no considered triangle pair
+  /// are skipped before their box test (src/query/unconsidered_leaf_pairs.hpp). The README's
+  /// self-CCD table gives the speed against the plain traversal.
   bool use_normal_cones = true;
   /// Skip nodes, and pairs of nodes, whose triangles the step's deformation moves too little,
   /// relative to one another, to close the gaps they have at rest: bounded mode by mode from
