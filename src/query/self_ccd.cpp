@@ -667,8 +667,8 @@ class DiscreteContext {
   bool node_cannot_self_touch(int) const { return false; }  // the cones are a continuous cull
   bool nodes_cannot_touch(int, int) const { return false; }
   bool node_held_apart(int) const { return false; }  // bounds over a step; the discrete query has certificates
-  bool leaves_hold_no_considered_pair(int, int) const { return false; }
   bool nodes_held_apart(int, int) const { return false; }
+  bool leaves_hold_no_considered_pair(int, int) const { return false; }
   bool triangle_meets_node(int, int) const { return true; }
 
   /// The triangles at positions i and j of the BVH's order.

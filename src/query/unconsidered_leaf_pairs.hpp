@@ -25,8 +25,6 @@ class UnconsideredLeafPairs {
     }
     return false;
   }
-  /// The listed pairs, each counted once.
-  long size() const { return static_cast<long>(partners_.size()) / 2; }
 
  private:
   std::vector<int> offsets_;   // per node, into partners_ (node count + 1 values)

@@ -184,8 +184,7 @@ std::pair<std::string, long> self_ccd_section(const BenchOptions& o, std::ostrea
      << " steps per row, FCL on the first " << std::min(table.fcl_steps, table.steps)
      << "; one thread; mean ms per step, each step's time the median of " << std::max(1, table.repeats)
      << " runs of each query, each after an untimed run of it (warm caches; FCL: one run, its steps back to back); "
-        "traditional: swept boxes only, "
-        "cones: with the normal-cone culls, "
+        "traditional: swept boxes only, cones: with the normal-cone culls, "
         "bounds: with the displacement bounds, cones + bounds: with both (the library's defaults without "
         "certificates), SSCC: the certificates (computed once per mesh, default parameters), the library's defaults; "
         "the culls' data "

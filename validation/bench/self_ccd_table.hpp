@@ -2,8 +2,8 @@
 // modes, random trajectories at a few amplitudes, the traditional query (plain swept boxes),
 // the query with normal cones, with the displacement bounds, with both (the library's defaults
 // without certificates), SSCC (the certificates, computed once per mesh and cached) and FCL's
-// traversal, one thread each, on the same steps; time, node tests and triangle-pair tests per
-// step (the median of a few repeats of each), and whether the queries agree.
+// traversal, one thread each, on the same steps; time (the median of a few warm runs of each),
+// node tests and triangle-pair tests per step, and whether the queries agree.
 // Step counts are small so that the table takes minutes (FCL is slow on the 75k bunny).
 #pragma once
 
