@@ -48,8 +48,11 @@ class RadiusBounds {
     eta0_ = per_unit * std::sqrt(3.0) * largest_coordinate;
     eta1_ = per_unit * largest_block;
     edge_norms_.resize(mesh_.edges().size());
+    edge_grams_.resize(mesh_.edges().size());
     for (std::size_t e = 0; e < mesh_.edges().size(); ++e) {
-      edge_norms_[e] = difference_norm(mesh_.edges()[e][0], mesh_.edges()[e][1]);
+      const auto rates = block(mesh_.edges()[e][0]) - block(mesh_.edges()[e][1]);
+      edge_norms_[e] = rates.stableNorm() * kUp;
+      edge_grams_[e] = rates * rates.transpose();
     }
   }
 
@@ -115,9 +118,9 @@ class RadiusBounds {
     const double l1 = e1.norm() * kUp, l2 = e2.norm() * kUp;
     // Edges (v0 v1) and (v2 v0) of the triangle: E1 and E2 (up to sign); E3 = E2 - E1 along
     // (v1 v2). (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E2 q) x (E3 q): the two smallest bound it.
-    const double m1 = edge_norms_[mesh_.triangle_edges(t)[0]];
-    const double m2 = edge_norms_[mesh_.triangle_edges(t)[2]];
-    const double m3 = edge_norms_[mesh_.triangle_edges(t)[1]];
+    const int edge1 = mesh_.triangle_edges(t)[0], edge2 = mesh_.triangle_edges(t)[2],
+              edge3 = mesh_.triangle_edges(t)[1];
+    const double m1 = edge_norms_[edge1], m2 = edge_norms_[edge2];
     const double l0_sum = l1 + l2, m_sum = m1 + m2;
     // The linear term's component along d, q_hat . (E2^T (d x e1) + E1^T (e2 x d)): at most
     // |g| s, computed with a margin for its rounding.
@@ -136,7 +139,9 @@ class RadiusBounds {
                           kRadiusMargin * (w2.norm() * m2 + w1.norm() * m1) + kUnderflowAllowance;
     const double constant = (2.0 * eta0_ * l0_sum + 4.0 * eta0_ * eta0_) * kUp;
     const double linear = (g_norm + 2.0 * eta0_ * m_sum + 2.0 * eta1_ * l0_sum + 8.0 * eta0_ * eta1_) * kUp;
-    const double smallest_product = std::min({m1 * m2, m1 * m3, m2 * m3});
+    const Vector3d u = d.unitOrthogonal(), v = d.cross(u);
+    const double p1 = projected_rate(edge1, u, v), p2 = projected_rate(edge2, u, v), p3 = projected_rate(edge3, u, v);
+    const double smallest_product = std::min({p1 * p2, p1 * p3, p2 * p3});
     const double quadratic = (smallest_product + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp +
                              kUnderflowAllowance;  // products of rates near 1e-160 underflow
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
@@ -261,8 +266,26 @@ class RadiusBounds {
     return scaled_norm(r_, along) * kUp + kRadiusMargin * e.apart + kUnderflowAllowance;
   }
 
-  /// ||U_hat_a - U_hat_b||_F, rounded up.
-  double difference_norm(int a, int b) const { return (block(a) - block(b)).stableNorm() * kUp; }
+  /// ||P E||_2 for edge e's rates E (3 x r) and P the projection on the plane spanned by the
+  /// orthonormal u and v (orthogonal to d): the largest |P E q| over unit q, the square root of
+  /// the largest eigenvalue of the plane's 2 x 2 block of E E^T, rounded up. Each computed entry
+  /// of E E^T errs by at most (r + 2) u ||E||_F^2, the eigenvalue's formula by a few u
+  /// ||E||_F^2 more: kRadiusMargin ||E||_F^2 covers both many times over. At most ||E||_F,
+  /// which is what rates too small to square (below 1e-100) get.
+  double projected_rate(int e, const Vector3d& u, const Vector3d& v) const {
+    const double frobenius = edge_norms_[e];
+    if (!(frobenius >= kSmallestSquaredRate)) return frobenius;
+    const Eigen::Matrix3d& gram = edge_grams_[e];
+    const Vector3d gram_u = gram * u, gram_v = gram * v;
+    const double uu = u.dot(gram_u), vv = v.dot(gram_v), uv = u.dot(gram_v);
+    const double largest = 0.5 * (uu + vv) + std::hypot(0.5 * (uu - vv), uv);
+    const double bound = std::sqrt(std::max(largest, 0.0) + kRadiusMargin * frobenius * frobenius) * kUp;
+    return std::min(bound, frobenius);
+  }
+  /// Below this a rate's square may lose its relative accuracy to underflow: projected_rate
+  /// keeps the Frobenius norm. Lower: squares that underflow; higher: looser bounds for tiny
+  /// rates only.
+  static constexpr double kSmallestSquaredRate = 1e-100;
   static double point_segment_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b) {
     const Vector3d ab = b - a;
     const double length2 = ab.squaredNorm();
@@ -278,7 +301,8 @@ class RadiusBounds {
   int mode_exponent_ = 0;             // k: modes_ holds the basis times 2^-k
   std::vector<double> scaled_modes_;  // empty when k = 0
   double eta0_ = 0.0, eta1_ = 0.0;
-  std::vector<double> edge_norms_;
+  std::vector<double> edge_norms_;           // ||E||_F of each edge's rates, rounded up
+  std::vector<Eigen::Matrix3d> edge_grams_;  // E E^T of each edge's rates
 };
 
 /// The radius of a set of triangles with boundary `chain` (a simple cycle) and normal sum

@@ -13,12 +13,17 @@
 //       E2 = U_hat_2 - U_hat_0, 3 x r) has d . n_T > 0 for every such configuration when
 //         c_T > A_T s + B_T s^2 + 2 eta (L0 + L1 s) + 4 eta^2,
 //       c_T = d . (e1 x e2), A_T = |E2^T (d x e1) + E1^T (e2 x d)|, B_T the product of the two
-//       smallest of ||E1||_F, ||E2||_F, ||E3||_F (E3 = E2 - E1), L0 = |e1| + |e2|,
+//       smallest of ||P E1||_2, ||P E2||_2, ||P E3||_2 (E3 = E2 - E1; P = I - d d^T, the
+//       projection across d; ||.||_2 the largest singular value), L0 = |e1| + |e2|,
 //       L1 = ||E1||_F + ||E2||_F.
 //       Why: d . n(q_hat) = c_T + q_hat . (E2^T (d x e1) + E1^T (e2 x d)) + d . ((E1 q_hat) x
-//       (E2 q_hat)), and (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E2 q) x (E3 q), each bounded by
-//       Cauchy-Schwarz; a computed edge is off by at most 2 eta, which moves the cross product
-//       by at most 2 eta (|e1(q_hat)| + |e2(q_hat)|) + 4 eta^2.
+//       (E2 q_hat)), and (E1 q) x (E2 q) = (E1 q) x (E3 q) = (E2 q) x (E3 q); the components
+//       along d do not enter d . (a x b) = d . (P a x P b), so each is at most
+//       ||P Ei||_2 ||P Ej||_2 ||q||^2 (Frobenius norms, the bound before, are up to sqrt(3)
+//       larger each: measured, the knot's cones query at amplitude 0.05 went from 90.1k node
+//       tests per step to 82.5k, the elephant's from 41.2k to 33.1k); a computed edge is off by
+//       at most 2 eta, which moves the cross product by at most 2 eta (|e1(q_hat)| +
+//       |e2(q_hat)|) + 4 eta^2.
 //       The condition is a quadratic in s: below its positive root it holds.
 //  (ii) the projection along d of the boundary stays one simple closed polygon for every t of
 //       the step when it is one at rest and, for every boundary vertex p and boundary edge

@@ -12,6 +12,9 @@
 #include <random>
 #include <string>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+
 #include "brute_force.hpp"
 #include "query/contour.hpp"
 #include "query/patch_radius.hpp"
@@ -401,6 +404,45 @@ void for_each_contour_pair(const sscc::SubspaceModel& model, const Vector3d& d,
 /// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
 /// in projection at rest or a triangle faces away. `contour`, when given, receives the
 /// contour's part alone.
+/// Hypothesis (i)'s bound of |d . ((E1 q) x (E2 q))| over unit q for triangle f: the smallest
+/// product of two of its edges' largest singular values once projected across d (only those
+/// components enter the product).
+double quadratic_bound(const sscc::SubspaceModel& model, const Vector3d& d, const sscc::Triangle& f) {
+  const auto across_rate = [&](int from, int to) {
+    const Eigen::MatrixXd projected =
+        (Eigen::Matrix3d::Identity() - d * d.transpose()) * (block_of(model, to) - block_of(model, from));
+    return Eigen::JacobiSVD<Eigen::MatrixXd>(projected).singularValues()(0);
+  };
+  const double n1 = across_rate(f[0], f[1]), n2 = across_rate(f[0], f[2]), n3 = across_rate(f[1], f[2]);
+  return std::min({n1 * n2, n1 * n3, n2 * n3});
+}
+
+/// The largest |d . ((E1 q) x (E2 q))| over unit q for triangle f: q^T M q with M the
+/// symmetric part of E1^T [d]x E2, whose extreme eigenvalues are the answer.
+double largest_quadratic(const sscc::SubspaceModel& model, const Vector3d& d, const sscc::Triangle& f) {
+  Eigen::Matrix3d cross_d;
+  cross_d << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
+  const Eigen::MatrixXd E1 = block_of(model, f[1]) - block_of(model, f[0]);
+  const Eigen::MatrixXd E2 = block_of(model, f[2]) - block_of(model, f[0]);
+  const Eigen::MatrixXd product = E1.transpose() * cross_d * E2;
+  const Eigen::MatrixXd symmetric = 0.5 * (product + product.transpose());
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(symmetric).eigenvalues().cwiseAbs().maxCoeff();
+}
+
+/// The positive root of hypothesis (i) (patch_radius.hpp) for triangle f and direction d,
+/// without rounding terms: 0 when d . n_f <= 0 at rest.
+double triangle_root(const sscc::SubspaceModel& model, const Vector3d& d, const sscc::Triangle& f) {
+  const std::vector<Vector3d>& rest = model.mesh().vertices();
+  const auto block = [&](int v) { return block_of(model, v); };
+  const Vector3d e1 = rest[f[1]] - rest[f[0]], e2 = rest[f[2]] - rest[f[0]];
+  const Eigen::MatrixXd E1 = block(f[1]) - block(f[0]), E2 = block(f[2]) - block(f[0]);
+  const double c = d.dot(e1.cross(e2));
+  if (!(c > 0.0)) return 0.0;
+  const double a = (E2.transpose() * d.cross(e1) + E1.transpose() * e2.cross(d)).norm();
+  const double b = quadratic_bound(model, d, f);
+  return 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c));  // no cancellation
+}
+
 double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
                       const std::vector<sscc::detail::DirectedEdge>& chain, double* contour = nullptr) {
   const std::vector<Vector3d>& rest = model.mesh().vertices();
@@ -408,18 +450,7 @@ double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& 
   const Vector3d d = mean_normal(model, triangles);
   if (!sscc::detail::stays_simple_in_projection(d, chain, rest, rest)) return 0.0;
   double radius = std::numeric_limits<double>::infinity();
-  for (int t : triangles) {
-    const sscc::Triangle& f = model.mesh().triangles()[t];
-    const Vector3d e1 = rest[f[1]] - rest[f[0]], e2 = rest[f[2]] - rest[f[0]];
-    const Eigen::MatrixXd E1 = block(f[1]) - block(f[0]), E2 = block(f[2]) - block(f[0]);
-    const Eigen::MatrixXd E3 = block(f[2]) - block(f[1]);
-    const double c = d.dot(e1.cross(e2));
-    if (!(c > 0.0)) return 0.0;
-    const double a = (E2.transpose() * d.cross(e1) + E1.transpose() * e2.cross(d)).norm();
-    const double n1 = E1.norm(), n2 = E2.norm(), n3 = E3.norm();
-    const double b = std::min({n1 * n2, n1 * n3, n2 * n3});
-    radius = std::min(radius, 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c)));  // no cancellation
-  }
+  for (int t : triangles) radius = std::min(radius, triangle_root(model, d, model.mesh().triangles()[t]));
   const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - d * d.transpose();
   double contour_radius = std::numeric_limits<double>::infinity();
   for_each_contour_pair(model, d, chain, [&](int p, int a, int b, double, const Vector3d& nu) {
@@ -467,6 +498,58 @@ TEST_CASE("patch radii: the fractions above a norm count the nodes' and the patc
       CHECK(radii.fraction_above(s) == static_cast<double>(nodes_above) / nodes);
       CHECK(radii.patch_fraction_above(s) == static_cast<double>(patches_above) / static_cast<double>(tops.size()));
     }
+  }
+}
+
+TEST_CASE("patch radii: hypothesis (i)'s quadratic bound holds the largest |d . ((E1 q) x (E2 q))| over unit q",
+          "[patch_radius]") {
+  // The library's radii are at most theorem_radius (the test below); this checks the
+  // theorem's quadratic term against the exact value.
+  int checked = 0;
+  double tightest = 0.0;  // the largest exact value over its bound: the bound is not vacuous
+  for (const sscc::SubspaceModel& model : models()) {
+    const Built built(model);
+    const auto& [bvh, boundaries, radii] = built;
+    for (int n : patches(radii, boundaries, static_cast<int>(bvh.nodes().size()))) {
+      const std::vector<int> triangles = triangles_of(bvh, n);
+      const Vector3d d = mean_normal(model, triangles);
+      for (int t : triangles) {
+        const sscc::Triangle& f = model.mesh().triangles()[t];
+        const double exact = largest_quadratic(model, d, f);
+        const double bound = quadratic_bound(model, d, f);
+        REQUIRE(exact <= bound * (1.0 + 1e-12));
+        if (bound > 0.0) tightest = std::max(tightest, exact / bound);
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked > 100);
+  CHECK(tightest > 0.49);  // linear fields reach half the bound on right triangles
+}
+
+TEST_CASE(
+    "patch radii: hypothesis (i)'s quadratic bound is reached when one edge's rates turn the other's by 90 degrees",
+    "[patch_radius]") {
+  // E2 = J E1 with J the quarter turn about d: d . ((E1 q) x (J E1 q)) = |P E1 q|^2, whose
+  // largest value over unit q is the bound exactly; a smaller bound would fail here.
+  std::mt19937_64 rng(31);
+  std::normal_distribution<double> normal;
+  for (int trial = 0; trial < 20; ++trial) {
+    const int r = 2 + trial % 7;
+    Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(9, r);
+    for (int i = 0; i < 3; ++i) {
+      for (int k = 0; k < r; ++k) basis(3 + i, k) = normal(rng);
+    }
+    basis.row(6) = -basis.row(4);  // the quarter turn about z of vertex 1's rates
+    basis.row(7) = basis.row(3);
+    for (int k = 0; k < r; ++k) basis(8, k) = normal(rng);
+    sscc::TriangleMesh mesh({Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0.3, 0.8, 0)}, {{0, 1, 2}});
+    const sscc::SubspaceModel model(std::move(mesh), basis, VectorXd::Ones(r));
+    const Vector3d d(0, 0, 1);
+    const sscc::Triangle f = model.mesh().triangles()[0];
+    const double exact = largest_quadratic(model, d, f);
+    REQUIRE(exact <= quadratic_bound(model, d, f) * (1.0 + 1e-12));
+    REQUIRE(exact >= quadratic_bound(model, d, f) * (1.0 - 1e-9));
   }
 }
 
