@@ -12,6 +12,7 @@
 #include "query/normal_cone.hpp"
 #include "query/patch_cull.hpp"
 #include "query/simple_contour.hpp"
+#include "sscc/query/self_ccd.hpp"
 
 namespace sscc::detail {
 
@@ -467,6 +468,17 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   }
   std::sort(sorted_radii_.begin(), sorted_radii_.end());
   std::sort(sorted_patch_radii_.begin(), sorted_patch_radii_.end());
+  for (int n = 0; n < node_count; ++n) {
+    const int triangles = nodes[n].triangle_end - nodes[n].triangle_begin;
+    if (patch_[n] == n && triangles > kRefitTriangleLimit) {
+      large_patch_coverage_.emplace_back(node_radius_[n],
+                                         static_cast<double>(triangles) / static_cast<double>(order.size()));
+    }
+  }
+  std::sort(large_patch_coverage_.begin(), large_patch_coverage_.end());
+  for (int i = static_cast<int>(large_patch_coverage_.size()) - 2; i >= 0; --i) {
+    large_patch_coverage_[i].second += large_patch_coverage_[i + 1].second;
+  }
   node_pairs_.for_each([&](int, int, double radius) { sorted_pair_radii_.push_back(radius); });
   std::sort(sorted_pair_radii_.begin(), sorted_pair_radii_.end());
 }
@@ -476,6 +488,13 @@ double PatchRadii::fraction_above(double s) const { return detail::fraction_abov
 double PatchRadii::node_pair_fraction_above(double s) const { return detail::fraction_above(sorted_pair_radii_, s); }
 
 double PatchRadii::patch_fraction_above(double s) const { return detail::fraction_above(sorted_patch_radii_, s); }
+
+double PatchRadii::large_patch_coverage_above(double s) const {
+  const auto first_above =
+      std::upper_bound(large_patch_coverage_.begin(), large_patch_coverage_.end(), s,
+                       [](double norm, const std::pair<double, double>& patch) { return norm < patch.first; });
+  return first_above == large_patch_coverage_.end() ? 0.0 : first_above->second;
+}
 
 PairRadiusTable::PairRadiusTable(int node_count, std::vector<std::pair<std::uint64_t, double>> pairs)
     : offsets_(node_count + 1, 0) {

@@ -174,6 +174,10 @@ class PatchRadii {
   /// The same for the patches' radii: how much a step of norm s culls at the top of the
   /// proven nodes, where the cones formed from the positions cull most.
   double patch_fraction_above(double s) const;
+  /// The fraction of the mesh's triangles under patches of more than kRefitTriangleLimit
+  /// triangles whose radius exceeds s: what a step of norm s leaves to those patches' subspace
+  /// boxes (NodeBounds::kHybrid), never refitted below them.
+  double large_patch_coverage_above(double s) const;
 
   /// Patches (nodes with a radius whose ancestors have none), pairs of adjacent patches and
   /// pairs of adjacent nodes with a radius of their own, for tests and statistics.
@@ -198,6 +202,9 @@ class PatchRadii {
   int patch_count_ = 0;
   // The positive radii of the nodes, the node pairs and the patches, ascending.
   std::vector<double> sorted_radii_, sorted_pair_radii_, sorted_patch_radii_;
+  // The radii of the patches of more than kRefitTriangleLimit triangles, ascending, each with
+  // the fraction of the mesh's triangles in it and the patches after it.
+  std::vector<std::pair<double, double>> large_patch_coverage_;
 };
 
 }  // namespace sscc::detail

@@ -48,6 +48,11 @@ class LazyBoxes {
     return boxes_[n];
   }
   bool known(int n) const { return known_[n] != 0; }
+  /// Sets node n's value, known from then on.
+  void set(int n, const Box& box) {
+    boxes_[n] = box;
+    known_[n] = 1;
+  }
   /// Node n's value; only once known(n).
   const Box& value(int n) const { return boxes_[n]; }
 

@@ -473,7 +473,11 @@ constexpr double kTheoremShortfall = 1e-3;
 
 }  // namespace
 
-TEST_CASE("patch radii: the fractions above a norm count the nodes' and the patches' radii", "[patch_radius]") {
+TEST_CASE(
+    "patch radii: the fractions above a norm count the nodes' and the patches' radii, and the large patches' "
+    "triangles",
+    "[patch_radius]") {
+  bool large_patches_counted = false;  // some patch above kRefitTriangleLimit triangles with a radius above s
   for (const sscc::SubspaceModel& model : models()) {
     const sscc::SubspaceBvh bvh(model);
     const sscc::detail::NodeBoundaries boundaries(bvh);
@@ -488,17 +492,25 @@ TEST_CASE("patch radii: the fractions above a norm count the nodes' and the patc
     REQUIRE(norms.size() > 1);
     for (std::size_t i = 0, count = norms.size(); i < count; ++i) norms.push_back(norms[i] * 0.999);
     for (const double s : norms) {
-      int nodes = 0, nodes_above = 0, patches_above = 0;
+      int nodes = 0, nodes_above = 0, patches_above = 0, large_triangles_above = 0;
       for (int n = 0; n < node_count; ++n) {
         nodes += radii.node_radius(n) > 0.0;
         nodes_above += s < radii.node_radius(n);
       }
-      for (const int n : tops) patches_above += s < radii.node_radius(n);
+      for (const int n : tops) {
+        patches_above += s < radii.node_radius(n);
+        const int triangles = bvh.nodes()[n].triangle_end - bvh.nodes()[n].triangle_begin;
+        if (triangles > sscc::kRefitTriangleLimit && s < radii.node_radius(n)) large_triangles_above += triangles;
+      }
+      large_patches_counted = large_patches_counted || large_triangles_above > 0;
       INFO("s = " << s);
       CHECK(radii.fraction_above(s) == static_cast<double>(nodes_above) / nodes);
       CHECK(radii.patch_fraction_above(s) == static_cast<double>(patches_above) / static_cast<double>(tops.size()));
+      CHECK(radii.large_patch_coverage_above(s) ==
+            Approx(static_cast<double>(large_triangles_above) / model.mesh().triangle_count()).margin(1e-12));
     }
   }
+  CHECK(large_patches_counted);
 }
 
 TEST_CASE("patch radii: hypothesis (i)'s quadratic bound holds the largest |d . ((E1 q) x (E2 q))| over unit q",

@@ -82,10 +82,13 @@ enum class SelfCcdMode : std::uint8_t {
 inline constexpr int kRefitTriangleLimit = 64;
 
 /// How node boxes are bounded over the step (each is computed at most once per query, for
-/// the nodes the traversal reaches).
+/// the nodes the traversal reaches; a query that computes every vertex up front, without
+/// certificates or far past them, refits every box in one pass instead, unless under
+/// kHybrid the normal cones' radii cull most of the mesh in large nodes).
 enum class NodeBounds : std::uint8_t {
   /// Subspace bounds for nodes above kRefitTriangleLimit triangles, refitted boxes below:
-  /// the vertices computed are those near where the traversal goes. The default.
+  /// the vertices computed are those near where the traversal goes. The default. When every
+  /// box is refitted in one pass (above), the large nodes' boxes are refitted too.
   kHybrid,
   /// Boxes refitted bottom-up from the vertex positions at both ends (3r flops per vertex
   /// under the node): tight whatever the deformation.
