@@ -53,7 +53,9 @@ class RadiusBounds {
     for (std::size_t e = 0; e < mesh_.edges().size(); ++e) {
       const auto rates = block(mesh_.edges()[e][0]) - block(mesh_.edges()[e][1]);
       edge_norms_[e] = rates.stableNorm() * kUp;
-      edge_grams_[e] = rates * rates.transpose();
+      // Only where projected_rate uses it: outside that range its entries could overflow.
+      edge_grams_[e] =
+          squares_in_range(edge_norms_[e]) ? Eigen::Matrix3d(rates * rates.transpose()) : Eigen::Matrix3d::Zero();
     }
   }
 
@@ -142,7 +144,8 @@ class RadiusBounds {
     const double linear = (g_norm + 2.0 * eta0_ * m_sum + 2.0 * eta1_ * l0_sum + 8.0 * eta0_ * eta1_) * kUp;
     const Vector3d u = d.unitOrthogonal(), v = d.cross(u);
     const double p1 = projected_rate(edge1, u, v), p2 = projected_rate(edge2, u, v), p3 = projected_rate(edge3, u, v);
-    const double smallest_product = std::min({p1 * p2, p1 * p3, p2 * p3});
+    // The smallest of the three products is the two smallest rates' (none overflows needlessly).
+    const double smallest_product = std::min({p1, p2, p3}) * median_of_three(p1, p2, p3);
     const double quadratic = (smallest_product + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp +
                              kUnderflowAllowance;  // products of rates near 1e-160 underflow
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
@@ -272,21 +275,28 @@ class RadiusBounds {
   /// the largest eigenvalue of the plane's 2 x 2 block of E E^T, rounded up. Each computed entry
   /// of E E^T errs by at most (r + 2) u ||E||_F^2, the eigenvalue's formula by a few u
   /// ||E||_F^2 more: kRadiusMargin ||E||_F^2 covers both many times over. At most ||E||_F,
-  /// which is what rates too small to square (below 1e-100) get.
+  /// which is what rates whose squares leave the range (squares_in_range) get, and what a NaN
+  /// would give way to.
   double projected_rate(int e, const Vector3d& u, const Vector3d& v) const {
     const double frobenius = edge_norms_[e];
-    if (!(frobenius >= kSmallestSquaredRate)) return frobenius;
+    if (!squares_in_range(frobenius)) return frobenius;
     const Eigen::Matrix3d& gram = edge_grams_[e];
     const Vector3d gram_u = gram * u, gram_v = gram * v;
     const double uu = u.dot(gram_u), vv = v.dot(gram_v), uv = u.dot(gram_v);
     const double largest = 0.5 * (uu + vv) + std::hypot(0.5 * (uu - vv), uv);
     const double bound = std::sqrt(std::max(largest, 0.0) + kRadiusMargin * frobenius * frobenius) * kUp;
-    return std::min(bound, frobenius);
+    return bound < frobenius ? bound : frobenius;
   }
-  /// Below this a rate's square may lose its relative accuracy to underflow: projected_rate
-  /// keeps the Frobenius norm. Lower: squares that underflow; higher: looser bounds for tiny
-  /// rates only.
+  static double median_of_three(double a, double b, double c) {
+    return std::max(std::min(a, b), std::min(std::max(a, b), c));
+  }
+  /// Rates whose norm lies outside this range keep their Frobenius norm in projected_rate:
+  /// below it their squares may lose their relative accuracy to underflow, above it overflow
+  /// (modes left unscaled, scale_modes, can reach 1e300). Narrower: looser bounds for extreme
+  /// rates only; wider: squares that leave the double range.
   static constexpr double kSmallestSquaredRate = 1e-100;
+  static constexpr double kLargestSquaredRate = 1e100;
+  static bool squares_in_range(double norm) { return norm >= kSmallestSquaredRate && norm <= kLargestSquaredRate; }
   static double point_segment_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b) {
     const Vector3d ab = b - a;
     const double length2 = ab.squaredNorm();

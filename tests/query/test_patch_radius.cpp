@@ -398,12 +398,6 @@ void for_each_contour_pair(const sscc::SubspaceModel& model, const Vector3d& d,
   }
 }
 
-/// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
-/// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
-/// of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over the boundary's
-/// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
-/// in projection at rest or a triangle faces away. `contour`, when given, receives the
-/// contour's part alone.
 /// Hypothesis (i)'s bound of |d . ((E1 q) x (E2 q))| over unit q for triangle f: the smallest
 /// product of two of its edges' largest singular values once projected across d (only those
 /// components enter the product).
@@ -443,6 +437,12 @@ double triangle_root(const sscc::SubspaceModel& model, const Vector3d& d, const 
   return 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c));  // no cancellation
 }
 
+/// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
+/// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
+/// of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over the boundary's
+/// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
+/// in projection at rest or a triangle faces away. `contour`, when given, receives the
+/// contour's part alone.
 double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
                       const std::vector<sscc::detail::DirectedEdge>& chain, double* contour = nullptr) {
   const std::vector<Vector3d>& rest = model.mesh().vertices();
@@ -778,6 +778,43 @@ TEST_CASE(
     }
   }
   CHECK(offset_nodes > 8);
+}
+
+TEST_CASE(
+    "patch radii: rates whose squares overflow in a basis left unscaled keep a finite bound, and the query "
+    "finds what exhaustive testing does",
+    "[patch_radius][query]") {
+  // One vertex of a bowl moves by (4, 0, -1) 1e156 per unit coordinate, and one entry of 1e-155
+  // keeps the modes unscaled (scaling would make it subnormal): the rates' Gram matrices would
+  // overflow (a NaN there once made a radius infinite and the step's crossing was missed).
+  constexpr double kHuge = 1e156;
+  constexpr int kGrid = 20;
+  const sscc::test::Surface bowl = [](double u, double v) {
+    const double x = -5 + 10 * u, y = -5 + 10 * v;
+    return Vector3d(x, y, -0.1 * x * x);
+  };
+  sscc::TriangleMesh mesh(sscc::test::grid_positions(kGrid, kGrid, false, false, bowl),
+                          sscc::test::grid_triangles(kGrid, kGrid, false, false));
+  const int centre = 10 * (kGrid + 1) + 10;
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(3 * mesh.vertex_count(), 1);
+  basis(3 * centre, 0) = 4 * kHuge;
+  basis(3 * centre + 2, 0) = -kHuge;
+  basis(0, 0) = 1e-155;
+  const sscc::SubspaceModel model(std::move(mesh), basis, VectorXd::Ones(1));
+  const Built built(model);
+  const auto& [bvh, boundaries, radii] = built;
+  const VectorXd q0 = VectorXd::Zero(1), q1 = VectorXd::Constant(1, 1.0 / kHuge);  // the centre crosses the sheet
+  CHECK(radii.node_radius(0) < q1[0]);
+  const sscc::SelfCcd ccd(bvh);
+  for (const int threads : {1, 2}) {
+    sscc::SelfCcdOptions options;
+    options.threads = threads;
+    options.use_displacement_bounds = false;  // the cones' radii alone (their rest clearances overflow here)
+    const sscc::SelfCcdReport culled = ccd.query(q0, q1, options);
+    const sscc::SelfCcdReport exhaustive = ccd.query_exhaustive(q0, q1, options);
+    REQUIRE(!exhaustive.pairs.empty());
+    CHECK(culled.pairs == exhaustive.pairs);
+  }
 }
 
 TEST_CASE(

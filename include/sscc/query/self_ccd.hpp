@@ -82,9 +82,10 @@ enum class SelfCcdMode : std::uint8_t {
 inline constexpr int kRefitTriangleLimit = 64;
 
 /// How node boxes are bounded over the step (each is computed at most once per query, for
-/// the nodes the traversal reaches; a query that computes every vertex up front, without
+/// the nodes the traversal reaches; a query() that computes every vertex up front, without
 /// certificates or far past them, refits every box in one pass instead, unless under
-/// kHybrid the normal cones' radii cull most of the mesh in large nodes).
+/// kHybrid the normal cones' radii cull most of the mesh in large nodes; query_positions
+/// refits on demand).
 enum class NodeBounds : std::uint8_t {
   /// Subspace bounds for nodes above kRefitTriangleLimit triangles, refitted boxes below:
   /// the vertices computed are those near where the traversal goes. The default. When every
