@@ -389,14 +389,19 @@ class StepContext {
       if (options_.bounds == NodeBounds::kHybrid && node.triangle_end - node.triangle_begin > kRefitTriangleLimit) {
         return Sweep{bvh_.box(m, q_hat0_, norm0_), bvh_.box(m, q_hat1_, norm1_)};
       }
-      Sweep sweep = Sweep::empty();
-      if (node.is_leaf()) {
-        for (int i = node.triangle_begin; i < node.triangle_end; ++i) sweep.merge(triangle_sweep(i));
-      } else {
-        for (int c = node.first_child; c < node.first_child + node.child_count; ++c) sweep.merge(node_sweep(c));
-      }
-      return sweep;
+      return refitted_sweep(node);
     });
+  }
+
+  /// A node's sweep merged from its triangles' or its children's.
+  Sweep refitted_sweep(const SubspaceBvh::Node& node) {
+    Sweep sweep = Sweep::empty();
+    if (node.is_leaf()) {
+      for (int i = node.triangle_begin; i < node.triangle_end; ++i) sweep.merge(triangle_sweep(i));
+    } else {
+      for (int c = node.first_child; c < node.first_child + node.child_count; ++c) sweep.merge(node_sweep(c));
+    }
+    return sweep;
   }
 
   /// Every triangle's and node's sweep, bottom-up in one pass (children follow their parent
@@ -404,22 +409,8 @@ class StepContext {
   /// and under NodeBounds::kHybrid refits of the large nodes too, tighter than their subspace
   /// boxes.
   void refit_every_sweep() {
-    const std::vector<int>& order = bvh_.triangle_order();
-    for (int i = 0; i < static_cast<int>(order.size()); ++i) {
-      const Triangle& triangle = mesh_.triangles()[order[i]];
-      triangle_sweeps_.set(i, Sweep{box_at(x0_, triangle), box_at(x1_, triangle)});
-    }
     const std::vector<SubspaceBvh::Node>& nodes = bvh_.nodes();
-    for (int n = static_cast<int>(nodes.size()) - 1; n >= 0; --n) {
-      const SubspaceBvh::Node& node = nodes[n];
-      Sweep sweep = Sweep::empty();
-      if (node.is_leaf()) {
-        for (int i = node.triangle_begin; i < node.triangle_end; ++i) sweep.merge(triangle_sweeps_.value(i));
-      } else {
-        for (int c = node.first_child; c < node.first_child + node.child_count; ++c) sweep.merge(node_sweeps_.value(c));
-      }
-      node_sweeps_.set(n, sweep);
-    }
+    for (int n = static_cast<int>(nodes.size()) - 1; n >= 0; --n) node_sweeps_.set(n, refitted_sweep(nodes[n]));
   }
 
   /// Whether either triangle's plane (positions i and j of the BVH's order) separates the
