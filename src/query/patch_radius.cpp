@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <unordered_set>
 #include <utility>
@@ -335,6 +336,36 @@ double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const 
   return std::min(radius, bounds.contour_radius(d, chain));
 }
 
+/// The triangles around the vertices two sets share (each visited by triangles_a and
+/// triangles_b), less those in_either set, sorted: what bridges two nodes meeting at vertices
+/// only, or pinched, into one patch (patch_radius.hpp).
+template <typename TrianglesA, typename TrianglesB, typename InEither>
+std::vector<int> bridging_triangles(const TriangleMesh& mesh, TrianglesA triangles_a, TrianglesB triangles_b,
+                                    InEither in_either) {
+  const auto vertices_of = [&](auto for_each_triangle) {
+    std::vector<int> vertices;
+    for_each_triangle([&](int t) {
+      for (const int v : mesh.triangles()[t]) vertices.push_back(v);
+    });
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+  };
+  const std::vector<int> vertices_a = vertices_of(triangles_a), vertices_b = vertices_of(triangles_b);
+  std::vector<int> shared;
+  std::set_intersection(vertices_a.begin(), vertices_a.end(), vertices_b.begin(), vertices_b.end(),
+                        std::back_inserter(shared));
+  std::vector<int> bridge;
+  for (const int v : shared) {
+    for (const int* t = mesh.triangles_of_vertex_begin(v); t != mesh.triangles_of_vertex_end(v); ++t) {
+      if (!in_either(*t)) bridge.push_back(*t);
+    }
+  }
+  std::sort(bridge.begin(), bridge.end());
+  bridge.erase(std::unique(bridge.begin(), bridge.end()), bridge.end());
+  return bridge;
+}
+
 }  // namespace
 
 PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
@@ -385,8 +416,41 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
     if (a > b) std::swap(a, b);
     return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
   };
+  const auto in_node = [&](int n, int t) {
+    return nodes[n].triangle_begin <= position_of[t] && position_of[t] < nodes[n].triangle_end;
+  };
+  // The set of a and b bridged by the stars of their shared vertices (patch_radius.hpp), when
+  // its boundary is one simple cycle: its radius, else 0.
+  const auto bridged_radius = [&](int a, int b, double floor, std::vector<DirectedEdge>& chain) {
+    const std::vector<int> bridge = bridging_triangles(
+        mesh, [&](auto visit) { node_triangles(a)(visit); }, [&](auto visit) { node_triangles(b)(visit); },
+        [&](int t) { return in_node(a, t) || in_node(b, t); });
+    if (bridge.empty()) return 0.0;
+    std::vector<DirectedEdge> edges(chain.begin(), chain.end());
+    Vector3d normal_sum = normal_sums[a] + normal_sums[b];
+    for (const int t : bridge) {
+      const Triangle& f = mesh.triangles()[t];
+      for (int k = 0; k < 3; ++k) edges.push_back({f[k], f[(k + 1) % 3]});
+      normal_sum += bounds.rest_normal(t);
+    }
+    chain = boundary_chain(std::move(edges));
+    if (!is_simple_cycle(chain)) return 0.0;
+    return set_radius(
+        bounds, normal_sum, chain,
+        [&](auto visit) {
+          node_triangles(a)(visit);
+          node_triangles(b)(visit);
+          for (const int t : bridge) visit(t);
+        },
+        floor);
+  };
   const auto union_radius = [&](int a, int b, double floor, std::vector<DirectedEdge>& union_chain) {
-    if (!union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain)) return 0.0;
+    if (!union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain)) {
+      // The two boundaries' sum, which the bridge's triangles then close.
+      union_chain.assign(boundaries.chain(a).begin(), boundaries.chain(a).end());
+      union_chain.insert(union_chain.end(), boundaries.chain(b).begin(), boundaries.chain(b).end());
+      return bridged_radius(a, b, floor, union_chain);
+    }
     return set_radius(
         bounds, normal_sums[a] + normal_sums[b], union_chain,
         [&](auto visit) {
@@ -406,12 +470,31 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   };
   std::unordered_set<std::uint64_t> patch_candidates, node_candidates;
   std::vector<int> chain_t, chain_u;
-  for (int e = 0; e < static_cast<int>(mesh.edges().size()); ++e) {
-    for (const int* t = mesh.triangles_of_edge_begin(e); t != mesh.triangles_of_edge_end(e); ++t) {
-      for (const int* u = t + 1; u != mesh.triangles_of_edge_end(e); ++u) {
+  // Each pair of triangles sharing a vertex, at the smallest vertex they share.
+  const auto smallest_shared = [&](int t, int u) {
+    int smallest = -1;
+    for (const int v : mesh.triangles()[t]) {
+      for (const int w : mesh.triangles()[u]) {
+        if (v == w && (smallest < 0 || v < smallest)) smallest = v;
+      }
+    }
+    return smallest;
+  };
+  const auto shared_count = [&](int t, int u) {
+    int count = 0;
+    for (const int v : mesh.triangles()[t]) {
+      for (const int w : mesh.triangles()[u]) count += v == w;
+    }
+    return count;
+  };
+  for (int v = 0; v < mesh.vertex_count(); ++v) {
+    for (const int* t = mesh.triangles_of_vertex_begin(v); t != mesh.triangles_of_vertex_end(v); ++t) {
+      for (const int* u = t + 1; u != mesh.triangles_of_vertex_end(v); ++u) {
+        if (smallest_shared(*t, *u) != v) continue;
         const int patch_t = patch_[leaf_of[*t]], patch_u = patch_[leaf_of[*u]];
-        if (patch_t < 0 || patch_u < 0) continue;
-        if (patch_t != patch_u) patch_candidates.insert(key_of(patch_t, patch_u));
+        if (patch_t >= 0 && patch_u >= 0 && patch_t != patch_u && shared_count(*t, *u) >= 2) {
+          patch_candidates.insert(key_of(patch_t, patch_u));
+        }
         holding_only(*t, *u, chain_t);
         holding_only(*u, *t, chain_u);
         for (int a : chain_t) {
@@ -419,7 +502,7 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
             // Each part a simple cycle: union_is_simple_cycle decides the union's boundary
             // only then (a node under a patch may be disconnected or pinched, on the lion and
             // the dragon; its union with a neighbour may then bound several cycles, which it accepts).
-            if (patch_[a] >= 0 && patch_[b] >= 0 && boundaries.simple_cycle(a) && boundaries.simple_cycle(b) &&
+            if (boundaries.simple_cycle(a) && boundaries.simple_cycle(b) &&
                 std::min(size(a), size(b)) >= kSmallestPairPart &&
                 std::max(size(a), size(b)) <= kLargestUnionRatio * std::min(size(a), size(b))) {
               node_candidates.insert(key_of(a, b));
@@ -455,7 +538,7 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   }
   patch_pairs_ = PairRadiusTable(node_count, std::move(kept));
   kept.clear();
-  const auto coarse = [&](int a, int b) { return patch_pair_radius(patch_[a], patch_[b]); };
+  const auto coarse = [&](int a, int b) { return patches_pair_radius(a, b); };
   for (const auto& [key, radius] : radii_of(node_candidates, coarse)) {
     if (radius > coarse(static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu))) {
       kept.emplace_back(key, radius);
@@ -520,8 +603,7 @@ PairRadiusTable::PairRadiusTable(int node_count, std::vector<std::pair<std::uint
 }
 
 double PatchRadii::pair_radius(int a, int b) const {
-  if (patch_[a] < 0 || patch_[b] < 0) return 0.0;
-  return std::max(patch_pair_radius(patch_[a], patch_[b]), node_pair_radius(a, b));
+  return std::max(patches_pair_radius(a, b), node_pair_radius(a, b));
 }
 
 }  // namespace sscc::detail

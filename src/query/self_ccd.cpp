@@ -89,7 +89,10 @@ constexpr double kSmallestApartFractionForBounds = 0.05;
 /// the tests cost on every node visited. Measured, one thread, 5 steps, the cones query
 /// against the traditional one: the dragon at amplitude 0.05 (0.3% of the radii above the
 /// step's norm), 0.97x with the radii tested; the elephant at 0.05 (6.4%), 1.00x. Lower:
-/// tests that do not pay; higher: culls lost.
+/// tests that do not pay; higher: culls lost. The node pairs' radii are tested with them
+/// (before, only when half of those exceeded the norm; Valgrind, the cones query, 5 steps:
+/// the knot at amplitude 0.05, 40% to 54% above it, 131.9M instructions against 152.0M, the
+/// dragon 322.8M against 364.0M; the lion at 0.1, 13% above it, 373.0M against 376.9M).
 constexpr double kSmallestRadiusFractionForCones = 0.02;
 
 /// A step that computes every vertex up front refits every node's sweep at once (a tight pass
@@ -106,13 +109,6 @@ constexpr double kSmallestRadiusFractionForCones = 0.02;
 /// patches, 23% more instructions at once (Valgrind, 5 steps: 203M against 166M). Lower:
 /// steps like the bunny's at 0.05 kept on demand; higher: refits the radii would spare.
 constexpr double kLargestCoverageForLazyRefit = 0.5;
-
-/// The node pairs' radii (patch_radius.hpp) are tested only when this fraction of them exceeds
-/// the step's norm: each costs a lookup in a large table. Measured, one thread, 5 steps, the
-/// cones query at amplitude 0.05 with them always tested (leaves' pairs then in the table
-/// too): the lion 12.4 ms against 10.7 without them, the 75k bunny 42.8 against 37.5; at 0.01
-/// (nine in ten above the norm) they pay. Lower: lookups that cull little; higher: culls lost.
-constexpr double kSmallestNodePairFractionForCones = 0.5;
 
 /// A step whose norm leaves more than this fraction of the patches' radii (the largest proven
 /// nodes: patch_radius.hpp) above it forms no cones from the positions (patch_cull.hpp): the
@@ -238,10 +234,7 @@ class StepContext {
     // it says how much they cull.
     const bool radii_from_norm = cones && culls.radii && q_hat0.size() > 0;
     const double radius_fraction = radii_from_norm ? culls.radii->fraction_above(s) : 0.0;
-    if (radius_fraction >= kSmallestRadiusFractionForCones) {
-      radii_ = culls.radii;
-      node_pair_radii_ = radii_->node_pair_fraction_above(s) >= kSmallestNodePairFractionForCones;
-    }
+    if (radius_fraction >= kSmallestRadiusFractionForCones) radii_ = culls.radii;
     rest_patches_ = cones ? culls.radii : nullptr;
     const double patch_fraction = radii_from_norm ? culls.radii->patch_fraction_above(s) : 0.0;
     const bool formed_cones_pay =
@@ -297,7 +290,7 @@ class StepContext {
     return patch_cull_ && (!rest_patches_ || rest_patches_->node_radius(n) > 0.0) && patch_cull_->cannot_self_touch(n);
   }
   bool nodes_cannot_touch(int a, int b) {
-    if (radii_ && radii_->pair_below(a, b, s_, node_pair_radii_)) {
+    if (radii_ && radii_->pair_below(a, b, s_)) {
       return ++stats_.cone_radius_culled, true;
     }
     return patch_cull_ && patch_cull_->cannot_touch(a, b);
@@ -547,7 +540,6 @@ class StepContext {
   FeatureHits<FeatureContact> hits_;
   const detail::PatchRadii* radii_ = nullptr;               // null: no cones bounded from the norm
   const detail::PatchRadii* rest_patches_ = nullptr;        // the nodes proven at rest (null: unknown)
-  bool node_pair_radii_ = false;                            // the radii of node pairs tested too
   bool separating_planes_ = false;                          // the triangle pairs' plane cull
   std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no cones formed per step
   std::unique_ptr<detail::StepDisplacement> displacement_;  // null: no displacement cull

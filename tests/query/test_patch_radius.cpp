@@ -86,8 +86,8 @@ double along(const Vector3d& d, const std::vector<Vector3d>& x, const sscc::Tria
   return d.dot((x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]));
 }
 
-/// visit(a, b) for every disjoint node pair under patches whose own radius beats their
-/// patches' union's (PatchRadii keeps a node pair's radius only then).
+/// visit(a, b) for every disjoint node pair whose own radius beats their patches' union's
+/// (0 unless both lie under patches): PatchRadii keeps a node pair's radius only then.
 template <typename Visit>
 void for_each_own_node_pair(const sscc::SubspaceBvh& bvh, const sscc::detail::NodeBoundaries& boundaries,
                             const sscc::detail::PatchRadii& radii, Visit visit) {
@@ -99,12 +99,57 @@ void for_each_own_node_pair(const sscc::SubspaceBvh& bvh, const sscc::detail::No
     patch[n] = parent >= 0 && patch[parent] >= 0 ? patch[parent] : radii.node_radius(n) > 0.0 ? n : -1;
   }
   for (int a = 0; a < count; ++a) {
-    for (int b = a + 1; b < count && patch[a] >= 0; ++b) {
+    for (int b = a + 1; b < count; ++b) {
       const bool disjoint =
           nodes[a].triangle_end <= nodes[b].triangle_begin || nodes[b].triangle_end <= nodes[a].triangle_begin;
-      if (disjoint && patch[b] >= 0 && radii.pair_radius(a, b) > radii.pair_radius(patch[a], patch[b])) visit(a, b);
+      const double patches_radius = patch[a] >= 0 && patch[b] >= 0 ? radii.pair_radius(patch[a], patch[b]) : 0.0;
+      if (disjoint && radii.pair_radius(a, b) > patches_radius) visit(a, b);
     }
   }
+}
+
+/// The set a node pair's radius is the theorem's for (patch_radius.hpp), with its boundary:
+/// the two nodes' triangles when their union's boundary is one simple cycle, else those and
+/// every other triangle at a vertex both nodes hold (the bridge), found here by a scan of
+/// every triangle.
+struct ProvenSet {
+  std::vector<int> triangles;
+  std::vector<sscc::detail::DirectedEdge> chain;
+  bool bridged = false;
+};
+ProvenSet proven_set(const sscc::SubspaceBvh& bvh, const sscc::detail::NodeBoundaries& boundaries, int a, int b) {
+  ProvenSet set;
+  set.triangles = triangles_of(bvh, a);
+  const std::vector<int> other = triangles_of(bvh, b);
+  set.triangles.insert(set.triangles.end(), other.begin(), other.end());
+  if (sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), set.chain)) return set;
+  set.bridged = true;
+  const sscc::TriangleMesh& mesh = bvh.model().mesh();
+  const auto vertices_of = [&](int n) {
+    std::vector<int> vertices;
+    for (int t : triangles_of(bvh, n))
+      vertices.insert(vertices.end(), mesh.triangles()[t].begin(), mesh.triangles()[t].end());
+    return vertices;
+  };
+  const std::vector<int> vertices_a = vertices_of(a), vertices_b = vertices_of(b);
+  const auto holds = [](const std::vector<int>& list, int x) {
+    return std::find(list.begin(), list.end(), x) != list.end();
+  };
+  // Each triangle at most once: the ones around the shared vertices, collected by a scan.
+  std::vector<char> shared(mesh.vertex_count(), 0);
+  for (int v : vertices_a) shared[v] = holds(vertices_b, v);
+  const std::vector<int> pair = set.triangles;
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    const sscc::Triangle& f = mesh.triangles()[t];
+    if ((shared[f[0]] || shared[f[1]] || shared[f[2]]) && !holds(pair, t)) set.triangles.push_back(t);
+  }
+  std::vector<sscc::detail::DirectedEdge> edges;
+  for (int t : set.triangles) {
+    const sscc::Triangle& f = mesh.triangles()[t];
+    for (int k = 0; k < 3; ++k) edges.push_back({f[k], f[(k + 1) % 3]});
+  }
+  set.chain = sscc::detail::boundary_chain(edges);
+  return set;
 }
 
 }  // namespace
@@ -567,7 +612,7 @@ TEST_CASE(
 
 TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' radius is the theorem's",
           "[patch_radius]") {
-  int nodes_checked = 0, pairs_checked = 0, node_pairs_checked = 0, leaf_pairs_checked = 0;
+  int nodes_checked = 0, pairs_checked = 0, node_pairs_checked = 0, leaf_pairs_checked = 0, bridged_pairs_checked = 0;
   for (const sscc::SubspaceModel& model : models()) {
     const sscc::SubspaceBvh bvh(model);
     const sscc::detail::NodeBoundaries boundaries(bvh);
@@ -581,17 +626,14 @@ TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' rad
       ++nodes_checked;
     }
     const std::vector<int> all = patches(radii, boundaries, static_cast<int>(bvh.nodes().size()));
-    std::vector<sscc::detail::DirectedEdge> union_chain;
     for (std::size_t i = 0; i < all.size(); ++i) {
       for (std::size_t j = i + 1; j < all.size(); ++j) {
         const double radius = radii.pair_radius(all[i], all[j]);
         if (radius == 0.0) continue;
         INFO("patches " << all[i] << " and " << all[j]);
-        REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(all[i]), boundaries.chain(all[j]), union_chain));
-        std::vector<int> both = triangles_of(bvh, all[i]);
-        const std::vector<int> other = triangles_of(bvh, all[j]);
-        both.insert(both.end(), other.begin(), other.end());
-        const double expected = theorem_radius(model, both, union_chain);
+        const ProvenSet set = proven_set(bvh, boundaries, all[i], all[j]);
+        REQUIRE(sscc::detail::is_simple_cycle(set.chain));
+        const double expected = theorem_radius(model, set.triangles, set.chain);
         REQUIRE(radius <= expected * (1.0 + kTheoremExcess));
         REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
         ++pairs_checked;
@@ -601,14 +643,13 @@ TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' rad
     for_each_own_node_pair(bvh, boundaries, radii, [&](int a, int b) {
       const double radius = radii.pair_radius(a, b);
       INFO("nodes " << a << " and " << b);
-      REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain));
-      std::vector<int> both = triangles_of(bvh, a);
-      const std::vector<int> other = triangles_of(bvh, b);
-      both.insert(both.end(), other.begin(), other.end());
-      const double expected = theorem_radius(model, both, union_chain);
+      const ProvenSet set = proven_set(bvh, boundaries, a, b);
+      REQUIRE(sscc::detail::is_simple_cycle(set.chain));
+      const double expected = theorem_radius(model, set.triangles, set.chain);
       REQUIRE(radius <= expected * (1.0 + kTheoremExcess));
       REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
       ++node_pairs_checked;
+      bridged_pairs_checked += set.bridged;
       leaf_pairs_checked += bvh.nodes()[a].is_leaf() || bvh.nodes()[b].is_leaf();
     });
   }
@@ -616,6 +657,7 @@ TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' rad
   CHECK(pairs_checked > 5);
   CHECK(leaf_pairs_checked > 20);
   CHECK(node_pairs_checked > leaf_pairs_checked);
+  CHECK(bridged_pairs_checked > 5);
 }
 
 namespace {
@@ -849,41 +891,44 @@ TEST_CASE(
 
 namespace {
 
-/// The disjoint node pairs under patches whose own union's radius beats their patches'
-/// union's (PatchRadii keeps a node pair's radius only then), checked to be unions of two
-/// simple cycles into one (union_is_simple_cycle's precondition, the theorem's hypothesis);
-/// returns how many were checked.
-int check_node_pair_unions(const sscc::SubspaceModel& model) {
+/// The disjoint node pairs whose own radius beats their patches' union's (PatchRadii keeps a
+/// node pair's radius only then), checked to be two simple cycles (union_is_simple_cycle's
+/// precondition) whose union, or whose union with the bridge (proven_set), has one simple
+/// cycle for its boundary (the theorem's hypothesis); counts the pairs checked and the bridged.
+std::pair<int, int> check_node_pair_sets(const sscc::SubspaceModel& model) {
   const sscc::SubspaceBvh bvh(model);
   const sscc::detail::NodeBoundaries boundaries(bvh);
   const sscc::detail::PatchRadii radii(bvh, boundaries);
-  int checked = 0;
-  std::vector<sscc::detail::DirectedEdge> sum;
+  int checked = 0, bridged = 0;
   for_each_own_node_pair(bvh, boundaries, radii, [&](int a, int b) {
     ++checked;
     INFO("nodes " << a << " and " << b << ", radius " << radii.pair_radius(a, b));
     CHECK(boundaries.simple_cycle(a));
     CHECK(boundaries.simple_cycle(b));
-    REQUIRE(sscc::detail::union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), sum));
-    CHECK(sscc::detail::is_simple_cycle(sum));
+    const ProvenSet set = proven_set(bvh, boundaries, a, b);
+    CHECK(sscc::detail::is_simple_cycle(set.chain));
+    bridged += set.bridged;
   });
-  return checked;
+  return {checked, bridged};
 }
 
 }  // namespace
 
-TEST_CASE("patch radii: a node pair's own radius only for two simple cycles whose union is one", "[patch_radius]") {
-  for (const sscc::SubspaceModel& model : models()) CHECK(check_node_pair_unions(model) > 0);
+TEST_CASE("patch radii: a node pair's own radius only for a union, bridged or not, bounded by one simple cycle",
+          "[patch_radius]") {
+  for (const sscc::SubspaceModel& model : models()) CHECK(check_node_pair_sets(model).first > 0);
   // Nodes under patches that are not simple cycles (not connected, or pinched) occur on the
-  // real meshes, not on the parametric grids.
+  // real meshes, not on the parametric grids; so do nodes meeting at vertices only.
   const std::filesystem::path meshes = std::filesystem::path(SSCC_SOURCE_DIR) / ".." / "shared" / "data" / "meshes";
   if (!sscc::test::shared_data_present(meshes, "the real meshes")) return;
   for (const char* name : {"lion.off", "ChineseDragon-10kv.off"}) {
     INFO(name);
     sscc::TriangleMesh mesh = sscc::read_mesh((meshes / name).string());
     const Eigen::MatrixXd basis = sscc::polynomial_basis(mesh, sscc::kMaxPolynomialModes);
-    CHECK(check_node_pair_unions(
-              sscc::SubspaceModel(std::move(mesh), basis, VectorXd::Ones(sscc::kMaxPolynomialModes))) > 0);
+    const auto [checked, bridged] =
+        check_node_pair_sets(sscc::SubspaceModel(std::move(mesh), basis, VectorXd::Ones(sscc::kMaxPolynomialModes)));
+    CHECK(checked > 0);
+    CHECK(bridged > 0);
   }
 }
 
@@ -895,7 +940,7 @@ TEST_CASE("patch radii: steps just below node pairs' radii, toward their closest
   // together fastest to first order, the step running through rest.
   std::mt19937_64 rng(53);
   long radius_culls = 0;
-  int adversarial_steps = 0;
+  int adversarial_steps = 0, bridged_steps = 0;  // the latter toward pairs bridged by their shared vertices
   for (const sscc::SubspaceModel& model : models()) {
     const sscc::SubspaceBvh bvh(model);
     const sscc::SelfCcd ccd(bvh);
@@ -960,11 +1005,13 @@ TEST_CASE("patch radii: steps just below node pairs' radii, toward their closest
         const VectorXd q = 0.999 * s * toward / toward.norm();
         compare(-q, q);
         ++adversarial_steps;
+        bridged_steps += proven_set(bvh, boundaries, a, b).bridged;
       }
     }
   }
   CHECK(radius_culls > 0);
   CHECK(adversarial_steps > 20);
+  CHECK(bridged_steps > 2);
 }
 
 TEST_CASE(
