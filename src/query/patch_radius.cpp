@@ -60,6 +60,7 @@ class RadiusBounds {
     }
   }
 
+  const Triangle& triangle(int t) const { return mesh_.triangles()[t]; }
   /// Triangle t's area-weighted normal at rest (e1 x e2).
   Vector3d rest_normal(int t) const {
     const Triangle& f = mesh_.triangles()[t];
@@ -71,8 +72,9 @@ class RadiusBounds {
   double triangle_radius(const Vector3d& d, int t) const { return radius_of_norm(scaled_triangle_radius(d, t)); }
   /// The radius of hypothesis (ii) for a boundary cycle seen along d (0 when its projection
   /// is not certainly simple at rest).
-  double contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain) const {
-    return radius_of_norm(scaled_contour_radius(d, chain));
+  double contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain,
+                        const std::vector<int>& small_fans) const {
+    return radius_of_norm(scaled_contour_radius(d, chain, small_fans));
   }
 
  private:
@@ -157,9 +159,20 @@ class RadiusBounds {
     return denominator > 0.0 ? kDown * 2.0 * slack / denominator : std::numeric_limits<double>::infinity();
   }
 
-  double scaled_contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain) const {
+  double scaled_contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain,
+                               const std::vector<int>& small_fans) const {
     if (!stays_simple_in_projection(d, chain, rest_, rest_)) return 0.0;
     const int k = static_cast<int>(chain.size());
+    // The vertex after each edge's end along the cycle, and whether a vertex's fan is small.
+    std::vector<std::pair<int, int>> edge_from(k);
+    for (int i = 0; i < k; ++i) edge_from[i] = {chain[i][0], i};
+    std::sort(edge_from.begin(), edge_from.end());
+    std::vector<int> after(k);
+    for (int i = 0; i < k; ++i) {
+      const auto next = std::lower_bound(edge_from.begin(), edge_from.end(), std::make_pair(chain[i][1], -1));
+      after[i] = chain[next->second][1];
+    }
+    const auto small_fan = [&](int v) { return std::binary_search(small_fans.begin(), small_fans.end(), v); };
     // Each vertex's parting rate from the chain's mean block C bounds a pair's by the
     // triangle inequality: the exact rate is needed only where that bound would lower the
     // radius.
@@ -204,6 +217,9 @@ class RadiusBounds {
       for (; j_it != along_u.end() && j_it->first <= hi + reach; ++j_it) {
         const int j = j_it->second, p = chain[j][0];
         if (p == a || p == b) continue;
+        // p next to the edge along the cycle, at a vertex of at most two triangles: implied by
+        // hypothesis (i) (patch_radius.hpp, the small fans).
+        if ((chain[j][1] == a && small_fan(a)) || (p == after[i] && small_fan(b))) continue;
         const double magnitude = starts[j].magnitude + starts[i].magnitude + ends[i].magnitude;
         const double gap = point_segment_distance(starts[j].projected, starts[i].projected, ends[i].projected) -
                            kRadiusMargin * magnitude - 2.0 * eta0_ * kUp;
@@ -329,11 +345,20 @@ double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const 
   if (!(length2 >= std::numeric_limits<double>::min()) || !std::isfinite(length2)) return 0.0;
   const Vector3d d = normal_sum / std::sqrt(length2);
   double radius = std::numeric_limits<double>::infinity();
+  std::vector<int> vertices;
   for_each_triangle([&](int t) {
     if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t));
+    for (const int v : bounds.triangle(t)) vertices.push_back(v);
   });
   if (!(radius > floor)) return 0.0;
-  return std::min(radius, bounds.contour_radius(d, chain));
+  // The vertices in at most two of the set's triangles, sorted.
+  std::sort(vertices.begin(), vertices.end());
+  std::vector<int> small_fans;
+  for (std::size_t i = 0, j = 0; i < vertices.size(); i = j) {
+    while (j < vertices.size() && vertices[j] == vertices[i]) ++j;
+    if (j - i <= 2) small_fans.push_back(vertices[i]);
+  }
+  return std::min(radius, bounds.contour_radius(d, chain, small_fans));
 }
 
 /// The triangles around the vertices two sets share (each visited by triangles_a and

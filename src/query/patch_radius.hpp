@@ -39,6 +39,20 @@
 //       vertex ever lies on an edge not containing it in projection, and simple_contour.hpp's
 //       lemma carries the rest polygon's simplicity to every t. Only the parting along nu
 //       counts: sliding along the edge, or along d, does not close the gap.
+//       Small fans: a vertex-edge pair whose vertex is next to the edge along the cycle
+//       (edges (p, a) and (a, b) consecutive: p against (a, b), or b against (p, a)) is left
+//       out when their shared vertex a lies in at most two triangles of S: below (i)'s
+//       radius, (i) keeps the vertex off the edge. The cycle passes a once, so the edges at a
+//       of S's triangles, but (p, a) and (a, b), cancel in pairs, and only triangles at a
+//       hold them. One triangle at a holds both: it is (p, a, b), positive in projection, so p
+//       is off the line through a and b. Two share the cancelling edge: (p, a, c) and
+//       (a, b, c) in the cycle's orientation. Each, positive in projection, turns the ray
+//       from a along one of its edges at a counter-clockwise onto the other by an angle in
+//       (0, pi): the ray a b onto a c, then a c onto a p, in total by an angle in (0, 2 pi).
+//       So the rays from a to p and to b differ: neither of p and b (apart from a in
+//       projection) lies on the other's edge. Measured, node tests of the cones query per
+//       step, 20 steps at amplitude 0.05, before and after: the knot 66.4k against 63.7k,
+//       the dragon 151.7k against 141.6k, the lion 47.5k against 39.3k.
 // The radius of S is the smallest of the roots of (i) over its triangles and of (ii) over its
 // boundary's vertex-edge pairs, 0 when a hypothesis fails at rest.
 //

@@ -423,22 +423,37 @@ Vector3d mean_normal(const sscc::SubspaceModel& model, const std::vector<int>& t
 }
 
 /// Hypothesis (ii)'s terms (patch_radius.hpp), rounding left out: for every vertex p of the
-/// boundary `chain` and edge (a, b) of it not containing p, with nu the unit direction of the
-/// projection along d from p's closest point on the edge to p, visit(p, a, b, l, nu) (l the
-/// closest point's parameter along the edge).
+/// boundary `chain` of the set `triangles` and edge (a, b) of it not containing p, with nu the
+/// unit direction of the projection along d from p's closest point on the edge to p,
+/// visit(p, a, b, l, nu, implied) (l the closest point's parameter along the edge; implied
+/// when (i) decides the pair: p next to the edge along the cycle, at an end of the edge in at
+/// most two of the set's triangles, the small fans).
 template <typename Visit>
-void for_each_contour_pair(const sscc::SubspaceModel& model, const Vector3d& d,
+void for_each_contour_pair(const sscc::SubspaceModel& model, const Vector3d& d, const std::vector<int>& triangles,
                            const std::vector<sscc::detail::DirectedEdge>& chain, Visit visit) {
   const std::vector<Vector3d>& rest = model.mesh().vertices();
   const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - d * d.transpose();
+  const auto fan_size = [&](int v) {
+    int count = 0;
+    for (int t : triangles) {
+      const sscc::Triangle& f = model.mesh().triangles()[t];
+      count += f[0] == v || f[1] == v || f[2] == v;
+    }
+    return count;
+  };
+  const auto has_edge = [&](int from, int to) {
+    return std::find(chain.begin(), chain.end(), sscc::detail::DirectedEdge{from, to}) != chain.end();
+  };
   for (const auto& edge : chain) {
-    const Vector3d pa = across * rest[edge[0]], pb = across * rest[edge[1]];
+    const int a = edge[0], b = edge[1];
+    const Vector3d pa = across * rest[a], pb = across * rest[b];
     for (const auto& other : chain) {
       const int p = other[0];
-      if (p == edge[0] || p == edge[1]) continue;
+      if (p == a || p == b) continue;
       const Vector3d pp = across * rest[p];
       const double l = std::clamp((pp - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
-      visit(p, edge[0], edge[1], l, (pp - (pa + l * (pb - pa))).normalized());
+      const bool implied = (has_edge(p, a) && fan_size(a) <= 2) || (has_edge(b, p) && fan_size(b) <= 2);
+      visit(p, a, b, l, (pp - (pa + l * (pb - pa))).normalized(), implied);
     }
   }
 }
@@ -485,7 +500,7 @@ double triangle_root(const sscc::SubspaceModel& model, const Vector3d& d, const 
 /// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
 /// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
 /// of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over the boundary's
-/// vertex-edge pairs, along the set's mean normal at rest; 0 when the contour is not simple
+/// vertex-edge pairs (but those (i) decides), along the set's mean normal at rest; 0 when the contour is not simple
 /// in projection at rest or a triangle faces away. `contour`, when given, receives the
 /// contour's part alone.
 double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
@@ -498,7 +513,8 @@ double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& 
   for (int t : triangles) radius = std::min(radius, triangle_root(model, d, model.mesh().triangles()[t]));
   const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - d * d.transpose();
   double contour_radius = std::numeric_limits<double>::infinity();
-  for_each_contour_pair(model, d, chain, [&](int p, int a, int b, double, const Vector3d& nu) {
+  for_each_contour_pair(model, d, triangles, chain, [&](int p, int a, int b, double, const Vector3d& nu, bool implied) {
+    if (implied) return;
     for (const int e : {a, b}) {
       const double gap = nu.dot(across * (rest[p] - rest[e]));
       const double rate = ((block(p) - block(e)).transpose() * nu).norm();
@@ -703,7 +719,7 @@ TEST_CASE(
   constexpr int kTrials = 12;
   constexpr int kBruteForcedPairs = 3;
   constexpr double kStepSamples[] = {0.25, 0.5, 0.75, 1.0};
-  int contour_decided = 0, adversarial_steps = 0, brute_forced = 0;
+  int contour_decided = 0, adversarial_steps = 0, brute_forced = 0, implied_past_their_rate = 0;
   for (int trial = 0; trial < kTrials; ++trial) {
     const sscc::SubspaceModel model = random_nearly_shut_c(rng);
     const Built built(model);
@@ -728,17 +744,22 @@ TEST_CASE(
       const Vector3d d = mean_normal(model, triangles);
       // The closing directions, each with its gap over its closing rate (the first to close).
       std::vector<std::pair<double, VectorXd>> closing;
-      for_each_contour_pair(model, d, chain, [&](int p, int a, int b, double l, const Vector3d& nu) {
-        const Eigen::MatrixXd closest = (1.0 - l) * block_of(model, a) + l * block_of(model, b);
-        const Vector3d closest_point = (1.0 - l) * rest[a] + l * rest[b];
-        const std::pair<Vector3d, Eigen::MatrixXd> targets[] = {
-            {rest[a], block_of(model, a)}, {rest[b], block_of(model, b)}, {closest_point, closest}};
-        for (const auto& [target, target_block] : targets) {
-          const VectorXd toward = (block_of(model, p) - target_block).transpose() * nu;
-          if (!(toward.norm() > 0.0)) continue;
-          closing.emplace_back(nu.dot(rest[p] - target) / toward.norm(), -s * toward / toward.norm());
-        }
-      });
+      // Every pair, those hypothesis (i) decides too: some close along nu faster than the
+      // step's norm allows (their gap over their rate below s), kept off their edge by (i).
+      for_each_contour_pair(
+          model, d, triangles, chain, [&](int p, int a, int b, double l, const Vector3d& nu, bool implied) {
+            const Eigen::MatrixXd closest = (1.0 - l) * block_of(model, a) + l * block_of(model, b);
+            const Vector3d closest_point = (1.0 - l) * rest[a] + l * rest[b];
+            const std::pair<Vector3d, Eigen::MatrixXd> targets[] = {
+                {rest[a], block_of(model, a)}, {rest[b], block_of(model, b)}, {closest_point, closest}};
+            for (const auto& [target, target_block] : targets) {
+              const VectorXd toward = (block_of(model, p) - target_block).transpose() * nu;
+              if (!(toward.norm() > 0.0)) continue;
+              const double closing_radius = nu.dot(rest[p] - target) / toward.norm();
+              closing.emplace_back(closing_radius, -s * toward / toward.norm());
+              implied_past_their_rate += implied && closing_radius < s;
+            }
+          });
       for (const auto& [pair_radius, q] : closing) {
         // At sampled t: stays_simple_in_projection over the whole step refuses where a vertex
         // ends close to an edge (its Bernstein coefficients are not subdivided), which the
@@ -773,6 +794,7 @@ TEST_CASE(
   }
   CHECK(contour_decided > kTrials);
   CHECK(adversarial_steps > 1000);
+  CHECK(implied_past_their_rate > 4);
   CHECK(brute_forced > 2 * kTrials);
 }
 
