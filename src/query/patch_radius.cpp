@@ -1,5 +1,7 @@
 #include "query/patch_radius.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -58,6 +60,13 @@ class RadiusBounds {
       edge_grams_[e] =
           squares_in_range(edge_norms_[e]) ? Eigen::Matrix3d(rates * rates.transpose()) : Eigen::Matrix3d::Zero();
     }
+    cross_grams_.resize(mesh_.triangle_count());
+    for (int t = 0; t < mesh_.triangle_count(); ++t) {
+      const Triangle& f = mesh_.triangles()[t];
+      const auto e1 = block(f[1]) - block(f[0]);
+      const auto e2 = block(f[2]) - block(f[0]);
+      cross_grams_[t] = exact_quadratic_applies(t) ? Eigen::Matrix3d(e1 * e2.transpose()) : Eigen::Matrix3d::Zero();
+    }
   }
 
   const Triangle& triangle(int t) const { return mesh_.triangles()[t]; }
@@ -69,12 +78,19 @@ class RadiusBounds {
 
   /// The positive root of hypothesis (i) for triangle t and direction d (0 when it fails at
   /// rest; infinity when the modes do not move the triangle's edges).
-  double triangle_radius(const Vector3d& d, int t) const { return radius_of_norm(scaled_triangle_radius(d, t)); }
-  /// The radius of hypothesis (ii) for a boundary cycle seen along d (0 when its projection
-  /// is not certainly simple at rest).
-  double contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain,
-                        const std::vector<int>& small_fans) const {
-    return radius_of_norm(scaled_contour_radius(d, chain, small_fans));
+  /// The exact quadratic term (largest_quadratic) is formed only where the product bound's
+  /// root falls below `below`: elsewhere it cannot lower the set's radius.
+  double triangle_radius(const Vector3d& d, int t, double below) const {
+    const double product_root = radius_of_norm(scaled_triangle_radius(d, t, false));
+    return product_root < below ? radius_of_norm(scaled_triangle_radius(d, t, true)) : product_root;
+  }
+  /// The smaller of `cap` and the radius of hypothesis (ii) for a boundary cycle seen along d
+  /// (0 when its projection is not certainly simple at rest): the vertex-edge pairs that
+  /// cannot fall below the cap are not bounded (the cap applies to unscaled modes only).
+  double contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain, const std::vector<int>& small_fans,
+                        double cap) const {
+    const double scaled_cap = mode_exponent_ == 0 ? cap : std::numeric_limits<double>::infinity();
+    return std::min(cap, radius_of_norm(scaled_contour_radius(d, chain, small_fans, scaled_cap)));
   }
 
  private:
@@ -117,7 +133,7 @@ class RadiusBounds {
     return radius >= std::numeric_limits<double>::min() ? radius : 0.0;
   }
 
-  double scaled_triangle_radius(const Vector3d& d, int t) const {
+  double scaled_triangle_radius(const Vector3d& d, int t, bool exact_quadratic) const {
     const Triangle& f = mesh_.triangles()[t];
     const Vector3d e1 = rest_[f[1]] - rest_[f[0]];
     const Vector3d e2 = rest_[f[2]] - rest_[f[0]];
@@ -149,7 +165,10 @@ class RadiusBounds {
     const double p1 = projected_rate(edge1, u, v), p2 = projected_rate(edge2, u, v), p3 = projected_rate(edge3, u, v);
     // The smallest of the three products is the two smallest rates' (none overflows needlessly).
     const double smallest_product = std::min({p1, p2, p3}) * median_of_three(p1, p2, p3);
-    const double quadratic = (smallest_product + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp +
+    const double largest =
+        exact_quadratic && exact_quadratic_applies(t) ? largest_quadratic(t, u, v) : smallest_product;
+    const double quadratic_rate = largest < smallest_product ? largest : smallest_product;  // NaN: the product
+    const double quadratic = (quadratic_rate + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp +
                              kUnderflowAllowance;  // products of rates near 1e-160 underflow
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
     if (!(slack > 0.0)) return 0.0;
@@ -160,7 +179,7 @@ class RadiusBounds {
   }
 
   double scaled_contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain,
-                               const std::vector<int>& small_fans) const {
+                               const std::vector<int>& small_fans, double cap) const {
     if (!stays_simple_in_projection(d, chain, rest_, rest_)) return 0.0;
     const int k = static_cast<int>(chain.size());
     // The vertex after each edge's end along the cycle, and whether a vertex's fan is small.
@@ -207,7 +226,7 @@ class RadiusBounds {
     std::sort(along_u.begin(), along_u.end());
     const double pair_rate_bound = (2.0 * largest_rate + 2.0 * eta1_) * kUp + kUnderflowAllowance;
     const double margins = 4.0 * kRadiusMargin * largest_magnitude + 2.0 * eta0_ * kUp;
-    double radius = std::numeric_limits<double>::infinity();
+    double radius = cap;
     for (int i = 0; i < k; ++i) {
       const int a = chain[i][0], b = chain[i][1];
       const double reach = radius * pair_rate_bound + margins;
@@ -304,6 +323,51 @@ class RadiusBounds {
     const double bound = std::sqrt(std::max(largest, 0.0) + kRadiusMargin * frobenius * frobenius) * kUp;
     return bound < frobenius ? bound : frobenius;
   }
+  /// Whether the rates of triangle t's first two edges have squares in range, so that their
+  /// Gram matrices and cross_grams_ hold their products (largest_quadratic applies).
+  bool exact_quadratic_applies(int t) const {
+    return squares_in_range(edge_norms_[mesh_.triangle_edges(t)[0]]) &&
+           squares_in_range(edge_norms_[mesh_.triangle_edges(t)[2]]);
+  }
+  /// The largest |d . ((E1 q) x (E2 q))| over unit q (u, v an orthonormal basis of the plane
+  /// across d, u x v = d), plus a margin for its rounding: hypothesis (i)'s quadratic term
+  /// exactly (patch_radius.hpp). With the r-vectors a1 = E1^T u, a2 = E1^T v, b1 = E2^T u,
+  /// b2 = E2^T v, the form is (a1 . q)(b2 . q) - (a2 . q)(b1 . q) = q^T W C W^T q for W = [a1 a2
+  /// b1 b2] and C holding +1/2 at (0, 3) and (3, 0), -1/2 at (1, 2) and (2, 1); its nonzero
+  /// eigenvalues are those of G^(1/2) C G^(1/2), G = W^T W the 4 x 4 Gram matrix, formed from
+  /// the edges' Gram matrices and the triangle's E1 E2^T. A computed G within delta of the
+  /// exact one (r + 2 roundings of each product: about 1e-14 (||E1||_F^2 + ||E2||_F^2)) moves
+  /// its square root by at most sqrt(delta) and the eigenvalues by about ||G||^(1/2)
+  /// sqrt(delta), near 1e-7 (||E1||_F^2 + ||E2||_F^2): kQuadraticMargin is ten times that.
+  double largest_quadratic(int t, const Vector3d& u, const Vector3d& v) const {
+    const int edge1 = mesh_.triangle_edges(t)[0], edge2 = mesh_.triangle_edges(t)[2];
+    const Eigen::Matrix3d &g1 = edge_grams_[edge1], &g2 = edge_grams_[edge2], &cross = cross_grams_[t];
+    const Vector3d axes[2] = {u, v};
+    Eigen::Matrix4d gram;
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        gram(i, j) = axes[i].dot(g1 * axes[j]);
+        gram(2 + i, 2 + j) = axes[i].dot(g2 * axes[j]);
+        gram(i, 2 + j) = gram(2 + j, i) = axes[i].dot(cross * axes[j]);
+      }
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> gram_eigen(gram);
+    const Eigen::Matrix4d root = gram_eigen.eigenvectors() *
+                                 gram_eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal() *
+                                 gram_eigen.eigenvectors().transpose();
+    Eigen::Matrix4d form = Eigen::Matrix4d::Zero();
+    form(0, 3) = form(3, 0) = 0.5;
+    form(1, 2) = form(2, 1) = -0.5;
+    const Eigen::Matrix4d middle = root * form * root;
+    const Eigen::Vector4d eigenvalues =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d>(middle, Eigen::EigenvaluesOnly).eigenvalues();
+    const double m1 = edge_norms_[edge1], m2 = edge_norms_[edge2];
+    return eigenvalues.cwiseAbs().maxCoeff() + kQuadraticMargin * (m1 * m1 + m2 * m2);
+  }
+  /// Relative margin of largest_quadratic, of ||E1||_F^2 + ||E2||_F^2: ten times its rounding
+  /// (above). Smaller: a quadratic term below the exact one; larger: smaller radii where the
+  /// projected rates nearly align.
+  static constexpr double kQuadraticMargin = 1e-6;
   static double median_of_three(double a, double b, double c) {
     return std::max(std::min(a, b), std::min(std::max(a, b), c));
   }
@@ -329,8 +393,9 @@ class RadiusBounds {
   int mode_exponent_ = 0;             // k: modes_ holds the basis times 2^-k
   std::vector<double> scaled_modes_;  // empty when k = 0
   double eta0_ = 0.0, eta1_ = 0.0;
-  std::vector<double> edge_norms_;           // ||E||_F of each edge's rates, rounded up
-  std::vector<Eigen::Matrix3d> edge_grams_;  // E E^T of each edge's rates
+  std::vector<double> edge_norms_;            // ||E||_F of each edge's rates, rounded up
+  std::vector<Eigen::Matrix3d> edge_grams_;   // E E^T of each edge's rates
+  std::vector<Eigen::Matrix3d> cross_grams_;  // E1 E2^T of each triangle's first two edges (largest_quadratic)
 };
 
 /// The radius of a set of triangles with boundary `chain` (a simple cycle) and normal sum
@@ -347,7 +412,7 @@ double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const 
   double radius = std::numeric_limits<double>::infinity();
   std::vector<int> vertices;
   for_each_triangle([&](int t) {
-    if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t));
+    if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t, radius));
     for (const int v : bounds.triangle(t)) vertices.push_back(v);
   });
   if (!(radius > floor)) return 0.0;
@@ -358,7 +423,7 @@ double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const 
     while (j < vertices.size() && vertices[j] == vertices[i]) ++j;
     if (j - i <= 2) small_fans.push_back(vertices[i]);
   }
-  return std::min(radius, bounds.contour_radius(d, chain, small_fans));
+  return bounds.contour_radius(d, chain, small_fans, radius);
 }
 
 /// The triangles around the vertices two sets share (each visited by triangles_a and

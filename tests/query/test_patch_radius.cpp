@@ -493,7 +493,7 @@ double triangle_root(const sscc::SubspaceModel& model, const Vector3d& d, const 
   const double c = d.dot(e1.cross(e2));
   if (!(c > 0.0)) return 0.0;
   const double a = (E2.transpose() * d.cross(e1) + E1.transpose() * e2.cross(d)).norm();
-  const double b = quadratic_bound(model, d, f);
+  const double b = largest_quadratic(model, d, f);
   return 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c));  // no cancellation
 }
 
@@ -576,8 +576,8 @@ TEST_CASE(
 
 TEST_CASE("patch radii: hypothesis (i)'s quadratic bound holds the largest |d . ((E1 q) x (E2 q))| over unit q",
           "[patch_radius]") {
-  // The library's radii are at most theorem_radius (the test below); this checks the
-  // theorem's quadratic term against the exact value.
+  // The library's radii are at most theorem_radius (the test below), whose quadratic term is
+  // the exact value; the library caps its own by this product bound, checked here against it.
   int checked = 0;
   double tightest = 0.0;  // the largest exact value over its bound: the bound is not vacuous
   for (const sscc::SubspaceModel& model : models()) {
