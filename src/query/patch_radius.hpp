@@ -90,7 +90,7 @@
 // gets no radius.
 //
 // Which sets: every node of at least kSmallestConeNode triangles whose boundary is a simple cycle,
-// with d its area-weighted mean normal at rest; the union of every two adjacent patches (the
+// with d its area-weighted mean normal at rest; the union of every two patches sharing an edge (the
 // largest nodes with a radius, each holding the nodes below it), with d their joint mean normal: a
 // node pair under two such patches is culled by their union's radius; and the union of two adjacent
 // nodes (leaves too, under patches or not), each of at least kSmallestPairPart triangles and a
