@@ -81,8 +81,7 @@ class RadiusBounds {
   /// The exact quadratic term (largest_quadratic) is formed only where the product bound's
   /// root falls below `below`: elsewhere it cannot lower the set's radius.
   double triangle_radius(const Vector3d& d, int t, double below) const {
-    const double product_root = radius_of_norm(scaled_triangle_radius(d, t, false));
-    return product_root < below ? radius_of_norm(scaled_triangle_radius(d, t, true)) : product_root;
+    return radius_of_norm(scaled_triangle_radius(d, t, below));
   }
   /// The smaller of `cap` and the radius of hypothesis (ii) for a boundary cycle seen along d
   /// (0 when its projection is not certainly simple at rest): the vertex-edge pairs that
@@ -133,7 +132,7 @@ class RadiusBounds {
     return radius >= std::numeric_limits<double>::min() ? radius : 0.0;
   }
 
-  double scaled_triangle_radius(const Vector3d& d, int t, bool exact_quadratic) const {
+  double scaled_triangle_radius(const Vector3d& d, int t, double below) const {
     const Triangle& f = mesh_.triangles()[t];
     const Vector3d e1 = rest_[f[1]] - rest_[f[0]];
     const Vector3d e2 = rest_[f[2]] - rest_[f[0]];
@@ -165,17 +164,20 @@ class RadiusBounds {
     const double p1 = projected_rate(edge1, u, v), p2 = projected_rate(edge2, u, v), p3 = projected_rate(edge3, u, v);
     // The smallest of the three products is the two smallest rates' (none overflows needlessly).
     const double smallest_product = std::min({p1, p2, p3}) * median_of_three(p1, p2, p3);
-    const double largest =
-        exact_quadratic && exact_quadratic_applies(t) ? largest_quadratic(t, u, v) : smallest_product;
-    const double quadratic_rate = largest < smallest_product ? largest : smallest_product;  // NaN: the product
-    const double quadratic = (quadratic_rate + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp +
-                             kUnderflowAllowance;  // products of rates near 1e-160 underflow
     const double slack = d.dot(e1.cross(e2)) - kRadiusMargin * l1 * l2 - constant;
     if (!(slack > 0.0)) return 0.0;
-    // hypot: linear^2 and 4 quadratic slack can underflow (coordinates near 1e-76 with modes
-    // near 2^-200), and the root without them would be up to twice the true one.
-    const double denominator = linear + std::hypot(linear, 2.0 * std::sqrt(quadratic) * std::sqrt(slack));
-    return denominator > 0.0 ? kDown * 2.0 * slack / denominator : std::numeric_limits<double>::infinity();
+    const auto root = [&](double quadratic_rate) {
+      const double quadratic = (quadratic_rate + 2.0 * eta1_ * m_sum + 4.0 * eta1_ * eta1_) * kUp +
+                               kUnderflowAllowance;  // products of rates near 1e-160 underflow
+      // hypot: linear^2 and 4 quadratic slack can underflow (coordinates near 1e-76 with modes
+      // near 2^-200), and the root without them would be up to twice the true one.
+      const double denominator = linear + std::hypot(linear, 2.0 * std::sqrt(quadratic) * std::sqrt(slack));
+      return denominator > 0.0 ? kDown * 2.0 * slack / denominator : std::numeric_limits<double>::infinity();
+    };
+    const double product_root = root(smallest_product);
+    if (!(radius_of_norm(product_root) < below) || !exact_quadratic_applies(t)) return product_root;
+    const double exact = largest_quadratic(t, u, v);
+    return exact < smallest_product ? root(exact) : product_root;  // NaN: the product's
   }
 
   double scaled_contour_radius(const Vector3d& d, const std::vector<DirectedEdge>& chain,
@@ -522,7 +524,9 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
         mesh, [&](auto visit) { node_triangles(a)(visit); }, [&](auto visit) { node_triangles(b)(visit); },
         [&](int t) { return in_node(a, t) || in_node(b, t); });
     if (bridge.empty()) return 0.0;
-    std::vector<DirectedEdge> edges(chain.begin(), chain.end());
+    // The two boundaries' sum, which the bridge's triangles then close.
+    std::vector<DirectedEdge> edges(boundaries.chain(a).begin(), boundaries.chain(a).end());
+    edges.insert(edges.end(), boundaries.chain(b).begin(), boundaries.chain(b).end());
     Vector3d normal_sum = normal_sums[a] + normal_sums[b];
     for (const int t : bridge) {
       const Triangle& f = mesh.triangles()[t];
@@ -542,9 +546,6 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   };
   const auto union_radius = [&](int a, int b, double floor, std::vector<DirectedEdge>& union_chain) {
     if (!union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain)) {
-      // The two boundaries' sum, which the bridge's triangles then close.
-      union_chain.assign(boundaries.chain(a).begin(), boundaries.chain(a).end());
-      union_chain.insert(union_chain.end(), boundaries.chain(b).begin(), boundaries.chain(b).end());
       return bridged_radius(a, b, floor, union_chain);
     }
     return set_radius(
@@ -566,29 +567,26 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
   };
   std::unordered_set<std::uint64_t> patch_candidates, node_candidates;
   std::vector<int> chain_t, chain_u;
-  // Each pair of triangles sharing a vertex, at the smallest vertex they share.
-  const auto smallest_shared = [&](int t, int u) {
-    int smallest = -1;
+  // Each pair of triangles sharing a vertex, at the smallest vertex they share: that vertex
+  // and how many they share.
+  const auto shared_vertices = [&](int t, int u) {
+    int smallest = -1, count = 0;
     for (const int v : mesh.triangles()[t]) {
       for (const int w : mesh.triangles()[u]) {
-        if (v == w && (smallest < 0 || v < smallest)) smallest = v;
+        if (v != w) continue;
+        ++count;
+        if (smallest < 0 || v < smallest) smallest = v;
       }
     }
-    return smallest;
-  };
-  const auto shared_count = [&](int t, int u) {
-    int count = 0;
-    for (const int v : mesh.triangles()[t]) {
-      for (const int w : mesh.triangles()[u]) count += v == w;
-    }
-    return count;
+    return std::make_pair(smallest, count);
   };
   for (int v = 0; v < mesh.vertex_count(); ++v) {
     for (const int* t = mesh.triangles_of_vertex_begin(v); t != mesh.triangles_of_vertex_end(v); ++t) {
       for (const int* u = t + 1; u != mesh.triangles_of_vertex_end(v); ++u) {
-        if (smallest_shared(*t, *u) != v) continue;
+        const auto [smallest, count] = shared_vertices(*t, *u);
+        if (smallest != v) continue;
         const int patch_t = patch_[leaf_of[*t]], patch_u = patch_[leaf_of[*u]];
-        if (patch_t >= 0 && patch_u >= 0 && patch_t != patch_u && shared_count(*t, *u) >= 2) {
+        if (patch_t >= 0 && patch_u >= 0 && patch_t != patch_u && count >= 2) {
           patch_candidates.insert(key_of(patch_t, patch_u));
         }
         holding_only(*t, *u, chain_t);
