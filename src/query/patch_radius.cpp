@@ -12,6 +12,7 @@
 #include "common/parallel_tasks.hpp"
 #include "common/scaled_norm.hpp"
 #include "common/sorted_fraction.hpp"
+#include "query/cone_axis.hpp"
 #include "query/normal_cone.hpp"
 #include "query/patch_cull.hpp"
 #include "query/simple_contour.hpp"
@@ -407,8 +408,9 @@ class RadiusBounds {
 };
 
 /// The radius of a set of triangles with boundary `chain` (a simple cycle) and normal sum
-/// `normal_sum`: the smaller of its triangles' and its contour's along the mean normal; 0
-/// when it would not exceed `floor` (the contour, the costly part, is then not bounded).
+/// `normal_sum`: the smaller of its triangles' and its contour's along its direction
+/// (set_direction: the mean normal or a cone's axis); 0 when it would not exceed `floor` (the
+/// contour, the costly part, is then not bounded).
 template <typename Triangles>
 double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const std::vector<DirectedEdge>& chain,
                   Triangles for_each_triangle, double floor = 0.0) {
@@ -416,12 +418,16 @@ double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const 
   // squares are subnormal errs by up to tens of percent.
   const double length2 = normal_sum.squaredNorm();
   if (!(length2 >= std::numeric_limits<double>::min()) || !std::isfinite(length2)) return 0.0;
-  const Vector3d d = normal_sum / std::sqrt(length2);
-  double radius = std::numeric_limits<double>::infinity();
+  std::vector<Vector3d> normals;
   std::vector<int> vertices;
   for_each_triangle([&](int t) {
-    if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t, radius));
+    normals.push_back(bounds.rest_normal(t));
     for (const int v : bounds.triangle(t)) vertices.push_back(v);
+  });
+  const Vector3d d = set_direction(normal_sum / std::sqrt(length2), normals);
+  double radius = std::numeric_limits<double>::infinity();
+  for_each_triangle([&](int t) {
+    if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t, radius));
   });
   if (!(radius > floor)) return 0.0;
   // The vertices in at most two of the set's triangles, sorted.

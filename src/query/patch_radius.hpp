@@ -82,25 +82,30 @@
 // norm is below the original's radius). A mode-free set (every rate 0) gets an infinite radius
 // without dividing by zero.
 // The step's norm s is computed in floating point too (relative error near 1e-15, inside the
-// margin). d, the normalized sum of the set's area-weighted normals, must be unit to rounding:
-// the contour's gaps are taken in the projection I - d d^T, which with |d| off 1 keeps part of
-// the extent along d (and the normals' quadratic term is not scaled by |d|). A sum whose
-// squares are subnormal (total area below about 1e-154, coordinates near 1e-80) has a plain
-// norm off by up to tens of percent (measured: radii 1.2% above the theorem's); such a set
-// gets no radius.
+// margin). d must be unit to rounding: the contour's gaps are taken in the projection
+// I - d d^T, which with |d| off 1 keeps part of the extent along d (and the normals' quadratic
+// term is not scaled by |d|). The normalized sum of the set's area-weighted normals is: but a
+// sum whose squares are subnormal (total area below about 1e-154, coordinates near 1e-80) has
+// a plain norm off by up to tens of percent (measured: radii 1.2% above the theorem's); such a
+// set gets no radius. A cone's axis is a centre of length at least 1e-2 normalized
+// (cone_axis.hpp), unit to rounding whatever the normals' scale.
 //
-// Which sets: every node of at least kSmallestConeNode triangles whose boundary is a simple cycle,
-// with d its area-weighted mean normal at rest; the union of every two patches sharing an edge (the
-// largest nodes with a radius, each holding the nodes below it), with d their joint mean normal: a
-// node pair under two such patches is culled by their union's radius; and the union of two adjacent
-// nodes (leaves too, under patches or not), each of at least kSmallestPairPart triangles and a
-// simple cycle, within kLargestUnionRatio in size (as the traversal pairs them), with their joint
-// mean normal, kept where it beats their patches' union (0 unless both lie under patches). Two
-// nodes are adjacent when triangles of theirs share a vertex. Where their union's boundary is not
-// one simple cycle (union_is_simple_cycle: nodes that meet at vertices only, or pinched), the set
-// is the union bridged by every other triangle at a vertex both nodes hold, with that set's mean
-// normal: the theorem proves no two of its triangles sharing no vertex touch, the pair's among
-// them. A set whose boundary is still not one simple cycle gets no radius. Measured, the cones
+// Which sets: every node of at least kSmallestConeNode triangles whose boundary is a simple cycle;
+// the union of every two patches sharing an edge (the largest nodes with a radius, each holding
+// the nodes below it): a node pair under two such patches is culled by their union's radius; and
+// the union of two adjacent nodes (leaves too, under patches or not), each of at least
+// kSmallestPairPart triangles and a simple cycle, within kLargestUnionRatio in size (as the
+// traversal pairs them), kept where it beats their patches' union (0 unless both lie under
+// patches). Two nodes are adjacent when triangles of theirs share a vertex. Where their union's
+// boundary is not one simple cycle (union_is_simple_cycle: nodes that meet at vertices only, or
+// pinched), the set is the union bridged by every other triangle at a vertex both nodes hold: the
+// theorem proves no two of its triangles sharing no vertex touch, the pair's among them. A set
+// whose boundary is still not one simple cycle gets no radius. Each set's d is its area-weighted
+// mean normal at rest, or the axis of a nearly smallest cone around its normals where every
+// triangle leans less from it (set_direction, cone_axis.hpp): on a curved set the mean leans past
+// a right angle from some triangle where the axis does not. Measured, node tests per step of the
+// cones query at amplitude 0.01 / 0.05 with the mean normal alone and with the axis (`sscc
+// selfccd` as below): AXIS_FIGURES. Measured, the cones
 // query's node tests per step at amplitudes 0.01 / 0.05 before and after the bridged sets and the
 // pairs outside patches (`sscc selfccd --mesh ../shared/data/meshes/M.off --steps 20 --amplitude A
 // --methods cones --threads 1`, the node pairs' radii tested on every step either way): the knot
