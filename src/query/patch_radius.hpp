@@ -103,21 +103,23 @@
 // whose boundary is still not one simple cycle gets no radius. Each set's d is its area-weighted
 // mean normal at rest, or the axis of a nearly smallest cone around its normals where every
 // triangle leans less from it (set_direction, cone_axis.hpp): on a curved set the mean leans past
-// a right angle from some triangle where the axis does not. Measured, node tests per step of the
-// cones query at amplitude 0.01 / 0.05 with the mean normal alone and with the axis (`sscc
-// selfccd` as below): AXIS_FIGURES. Measured, the cones
-// query's node tests per step at amplitudes 0.01 / 0.05 before and after the bridged sets and the
-// pairs outside patches (`sscc selfccd --mesh ../shared/data/meshes/M.off --steps 20 --amplitude A
-// --methods cones --threads 1`, the node pairs' radii tested on every step either way): the knot
-// 11.8k / 69.6k against 8.9k / 66.4k, the dragon 61.8k / 156.2k against 50.4k / 151.7k, the
-// elephant 20.2k / 31.6k against 16.5k / 29.0k, the lion 20.0k / 51.5k against 17.2k / 47.5k (about
-// a third of the node pairs the traversal visited on the knot at 0.05 met at vertices only).
+// a right angle from some triangle where the axis does not.
+// Measured, node tests per step of the cones query, 20 steps at amplitudes 0.01 / 0.05 (`sscc
+// selfccd --mesh ../shared/data/meshes/M.off --steps 20 --amplitude A --methods cones --threads
+// 1`): with the mean normal alone against with the axis, the knot 8.7k / 52.1k against 7.4k /
+// 49.7k, the dragon 47.1k / 128.5k against 29.8k / 121.8k, the elephant 16.3k / 26.5k against
+// 9.8k / 22.6k, the lion 16.6k / 38.0k against 7.6k / 34.2k, the 75k bunny 12.7k / 33.2k against
+// 6.6k / 25.8k; before and after the bridged sets and the pairs outside patches (the node pairs'
+// radii tested on every step either way), the knot 11.8k / 69.6k against 8.9k / 66.4k, the
+// dragon 61.8k / 156.2k against 50.4k / 151.7k, the elephant 20.2k / 31.6k against 16.5k / 29.0k,
+// the lion 20.0k / 51.5k against 17.2k / 47.5k (about a third of the node pairs the traversal
+// visited on the knot at 0.05 met at vertices only).
 //
 // Cost: built once per hierarchy, on every thread (SelfCcd::prepare, which builds them with
-// the rest of the culls' data, took 0.49 s for the 15k-triangle lion and 3.6 s for the
-// 75k-triangle bunny, two threads, before leaves' pairs got radii, which add 0.1 to 0.2 s and
-// 0.8 to 1.9 s); a query tests a node in O(1) and a node pair with at
-// most two lookups in short contiguous lists (PairRadiusTable).
+// the rest of the culls' data for the `selfccd` command's four option sets, two threads, took
+// 1.66 s for the 15k-triangle lion, 1.79 s for the 20k dragon and 11.5 s for the 75k bunny;
+// 1.29 s, 1.33 s and 9.47 s before the cones' axes); a query tests a node in O(1) and a node
+// pair with at most two lookups in short contiguous lists (PairRadiusTable).
 #pragma once
 
 #include <Eigen/Core>
