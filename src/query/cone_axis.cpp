@@ -62,9 +62,11 @@ Eigen::Vector3d cone_axis(const std::vector<Eigen::Vector3d>& normals) {
 
 Eigen::Vector3d set_direction(const Eigen::Vector3d& mean, const std::vector<Eigen::Vector3d>& normals) {
   std::vector<Eigen::Vector3d> units = unit_directions(normals);
+  const double along_mean = smallest_cosine(mean, units);
+  if (along_mean >= kLargestCosineForAxis) return mean;
   const Eigen::Vector3d axis = axis_of_units(units);
   if (axis.isZero()) return mean;
-  return smallest_cosine(axis, units) > smallest_cosine(mean, units) + kSmallestAxisGain ? axis : mean;
+  return smallest_cosine(axis, units) > along_mean + kSmallestAxisGain ? axis : mean;
 }
 
 }  // namespace sscc::detail
