@@ -12,12 +12,14 @@ namespace {
 /// normalizing a short vector would amplify its rounding.
 constexpr double kShortestCentre = 1e-2;
 
+/// The directions of the finite nonzero normals, scaled before they are normalized (normals
+/// of tiny triangles have subnormal squares, whose plain norm errs).
 std::vector<Eigen::Vector3d> unit_directions(const std::vector<Eigen::Vector3d>& normals) {
   std::vector<Eigen::Vector3d> units;
   units.reserve(normals.size());
   for (const Eigen::Vector3d& n : normals) {
-    const double length = n.norm();
-    if (length > 0.0 && std::isfinite(length)) units.push_back(n / length);
+    const double largest = n.cwiseAbs().maxCoeff();
+    if (largest > 0.0 && std::isfinite(largest)) units.push_back((n / largest).normalized());
   }
   return units;
 }
@@ -28,8 +30,10 @@ double smallest_cosine(const Eigen::Vector3d& d, const std::vector<Eigen::Vector
   return smallest;
 }
 
-/// cone_axis of unit normals, which it sorts.
-Eigen::Vector3d axis_of_units(std::vector<Eigen::Vector3d>& units) {
+}  // namespace
+
+Eigen::Vector3d cone_axis(const std::vector<Eigen::Vector3d>& normals) {
+  std::vector<Eigen::Vector3d> units = unit_directions(normals);
   if (units.empty()) return Eigen::Vector3d::Zero();
   std::sort(units.begin(), units.end(), [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
@@ -45,7 +49,10 @@ Eigen::Vector3d axis_of_units(std::vector<Eigen::Vector3d>& units) {
     double smallest = farthest->dot(axis);
     for (const Eigen::Vector3d& n : units) {
       const double cosine = n.dot(axis);
-      if (cosine < smallest) farthest = &n, smallest = cosine;
+      if (cosine < smallest) {
+        farthest = &n;
+        smallest = cosine;
+      }
     }
     centre += (*farthest - centre) / (k + 1.0);
   }
@@ -53,20 +60,13 @@ Eigen::Vector3d axis_of_units(std::vector<Eigen::Vector3d>& units) {
   return centre.normalized();
 }
 
-}  // namespace
-
-Eigen::Vector3d cone_axis(const std::vector<Eigen::Vector3d>& normals) {
-  std::vector<Eigen::Vector3d> units = unit_directions(normals);
-  return axis_of_units(units);
-}
-
-Eigen::Vector3d set_direction(const Eigen::Vector3d& mean, const std::vector<Eigen::Vector3d>& normals) {
-  std::vector<Eigen::Vector3d> units = unit_directions(normals);
+Eigen::Vector3d axis_to_try(const Eigen::Vector3d& mean, const std::vector<Eigen::Vector3d>& normals) {
+  const std::vector<Eigen::Vector3d> units = unit_directions(normals);
   const double along_mean = smallest_cosine(mean, units);
-  if (along_mean >= kLargestCosineForAxis) return mean;
-  const Eigen::Vector3d axis = axis_of_units(units);
-  if (axis.isZero()) return mean;
-  return smallest_cosine(axis, units) > along_mean + kSmallestAxisGain ? axis : mean;
+  if (along_mean >= kLargestCosineForAxis) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d axis = cone_axis(normals);
+  if (axis.isZero() || !(smallest_cosine(axis, units) > along_mean + kSmallestAxisGain)) return Eigen::Vector3d::Zero();
+  return axis;
 }
 
 }  // namespace sscc::detail

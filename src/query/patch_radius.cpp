@@ -407,29 +407,30 @@ class RadiusBounds {
   std::vector<Eigen::Matrix3d> cross_grams_;  // E1 E2^T of each triangle's first two edges (largest_quadratic)
 };
 
+/// A set's radius and the direction that proves it.
+struct SetRadius {
+  double radius = 0.0;
+  bool along_mean = true;  ///< along the set's mean normal, else along a cone's axis
+};
+
 /// The radius of a set of triangles with boundary `chain` (a simple cycle) and normal sum
-/// `normal_sum`: the smaller of its triangles' and its contour's along its direction
-/// (set_direction: the mean normal or a cone's axis); 0 when it would not exceed `floor` (the
-/// contour, the costly part, is then not bounded).
+/// `normal_sum`: the smaller of its triangles' and its contour's along its mean normal, or
+/// along the axis axis_to_try gives where that proves the larger triangles' radius (the mean
+/// on a tie); 0 when it would not exceed `floor` (the contour, the costly part, is then not
+/// bounded).
 template <typename Triangles>
-double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const std::vector<DirectedEdge>& chain,
-                  Triangles for_each_triangle, double floor = 0.0) {
+SetRadius set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const std::vector<DirectedEdge>& chain,
+                     Triangles for_each_triangle, double floor = 0.0) {
   // d must be unit to rounding (FLOATING POINT in patch_radius.hpp): the norm of a sum whose
   // squares are subnormal errs by up to tens of percent.
   const double length2 = normal_sum.squaredNorm();
-  if (!(length2 >= std::numeric_limits<double>::min()) || !std::isfinite(length2)) return 0.0;
+  if (!(length2 >= std::numeric_limits<double>::min()) || !std::isfinite(length2)) return {};
   std::vector<Vector3d> normals;
   std::vector<int> vertices;
   for_each_triangle([&](int t) {
     normals.push_back(bounds.rest_normal(t));
     for (const int v : bounds.triangle(t)) vertices.push_back(v);
   });
-  const Vector3d d = set_direction(normal_sum / std::sqrt(length2), normals);
-  double radius = std::numeric_limits<double>::infinity();
-  for_each_triangle([&](int t) {
-    if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t, radius));
-  });
-  if (!(radius > floor)) return 0.0;
   // The vertices in at most two of the set's triangles, sorted.
   std::sort(vertices.begin(), vertices.end());
   std::vector<int> small_fans;
@@ -437,7 +438,21 @@ double set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const 
     while (j < vertices.size() && vertices[j] == vertices[i]) ++j;
     if (j - i <= 2) small_fans.push_back(vertices[i]);
   }
-  return bounds.contour_radius(d, chain, small_fans, radius);
+  // The radius along d, 0 unless above `above`.
+  const auto radius_along = [&](const Vector3d& d, double above) {
+    double radius = std::numeric_limits<double>::infinity();
+    for_each_triangle([&](int t) {
+      if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t, radius));
+    });
+    if (!(radius > above)) return 0.0;
+    const double with_contour = bounds.contour_radius(d, chain, small_fans, radius);
+    return with_contour > above ? with_contour : 0.0;
+  };
+  const Vector3d mean = normal_sum / std::sqrt(length2);
+  const double along_mean = radius_along(mean, floor);
+  const Vector3d axis = axis_to_try(mean, normals);
+  const double along_axis = axis.isZero() ? 0.0 : radius_along(axis, std::max(floor, along_mean));
+  return along_axis > along_mean ? SetRadius{along_axis, false} : SetRadius{along_mean, true};
 }
 
 /// The triangles around the vertices two sets share (each visited by triangles_a and
@@ -473,7 +488,7 @@ std::vector<int> bridging_triangles(const TriangleMesh& mesh, TrianglesA triangl
 }  // namespace
 
 PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
-    : node_radius_(bvh.nodes().size(), 0.0), patch_(bvh.nodes().size(), -1) {
+    : node_radius_(bvh.nodes().size(), 0.0), along_mean_(bvh.nodes().size(), 0), patch_(bvh.nodes().size(), -1) {
   const RadiusBounds bounds(bvh);
   const std::vector<SubspaceBvh::Node>& nodes = bvh.nodes();
   const std::vector<int>& order = bvh.triangle_order();
@@ -493,11 +508,19 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
       for (int i = nodes[n].triangle_begin; i < nodes[n].triangle_end; ++i) visit(order[i]);
     };
   };
-  for (int n = 0; n < node_count; ++n) {
-    const SubspaceBvh::Node& node = nodes[n];
-    if (node.triangle_end - node.triangle_begin >= kSmallestConeNode && boundaries.simple_cycle(n)) {
-      node_radius_[n] = set_radius(bounds, normal_sums[n], boundaries.chain(n), node_triangles(n));
+  // The nodes' radii on every thread (each node's set alone), then the patches top-down.
+  constexpr int kNodesPerTask = 16;
+  run_tasks((node_count + kNodesPerTask - 1) / kNodesPerTask, resolve_threads(0), [&](int task, int) {
+    for (int n = task * kNodesPerTask; n < std::min(node_count, (task + 1) * kNodesPerTask); ++n) {
+      const SubspaceBvh::Node& node = nodes[n];
+      if (node.triangle_end - node.triangle_begin >= kSmallestConeNode && boundaries.simple_cycle(n)) {
+        const SetRadius set = set_radius(bounds, normal_sums[n], boundaries.chain(n), node_triangles(n));
+        node_radius_[n] = set.radius;
+        along_mean_[n] = set.radius > 0.0 && set.along_mean;
+      }
     }
+  });
+  for (int n = 0; n < node_count; ++n) {
     const int parent = boundaries.parent(n);
     patch_[n] = parent >= 0 && patch_[parent] >= 0 ? patch_[parent] : node_radius_[n] > 0.0 ? n : -1;
     patch_count_ += patch_[n] == n;
@@ -542,25 +565,27 @@ PatchRadii::PatchRadii(const SubspaceBvh& bvh, const NodeBoundaries& boundaries)
     chain = boundary_chain(std::move(edges));
     if (!is_simple_cycle(chain)) return 0.0;
     return set_radius(
-        bounds, normal_sum, chain,
-        [&](auto visit) {
-          node_triangles(a)(visit);
-          node_triangles(b)(visit);
-          for (const int t : bridge) visit(t);
-        },
-        floor);
+               bounds, normal_sum, chain,
+               [&](auto visit) {
+                 node_triangles(a)(visit);
+                 node_triangles(b)(visit);
+                 for (const int t : bridge) visit(t);
+               },
+               floor)
+        .radius;
   };
   const auto union_radius = [&](int a, int b, double floor, std::vector<DirectedEdge>& union_chain) {
     if (!union_is_simple_cycle(boundaries.chain(a), boundaries.chain(b), union_chain)) {
       return bridged_radius(a, b, floor, union_chain);
     }
     return set_radius(
-        bounds, normal_sums[a] + normal_sums[b], union_chain,
-        [&](auto visit) {
-          node_triangles(a)(visit);
-          node_triangles(b)(visit);
-        },
-        floor);
+               bounds, normal_sums[a] + normal_sums[b], union_chain,
+               [&](auto visit) {
+                 node_triangles(a)(visit);
+                 node_triangles(b)(visit);
+               },
+               floor)
+        .radius;
   };
   const auto size = [&](int n) { return nodes[n].triangle_end - nodes[n].triangle_begin; };
   // The nodes holding triangle t but not triangle u, leaf first.

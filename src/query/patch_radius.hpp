@@ -100,10 +100,11 @@
 // boundary is not one simple cycle (union_is_simple_cycle: nodes that meet at vertices only, or
 // pinched), the set is the union bridged by every other triangle at a vertex both nodes hold: the
 // theorem proves no two of its triangles sharing no vertex touch, the pair's among them. A set
-// whose boundary is still not one simple cycle gets no radius. Each set's d is its area-weighted
-// mean normal at rest, or the axis of a nearly smallest cone around its normals where every
-// triangle leans less from it (set_direction, cone_axis.hpp): on a curved set the mean leans past
-// a right angle from some triangle where the axis does not.
+// whose boundary is still not one simple cycle gets no radius. Each set is bounded along its
+// area-weighted mean normal at rest and, where some triangle leans more than 60 degrees from
+// that, along the axis of a nearly smallest cone around its normals too (axis_to_try,
+// cone_axis.hpp), and keeps the larger radius: on a curved set the mean leans past a right
+// angle from some triangle where the axis may not.
 // Measured, node tests per step of the cones query, 20 steps at amplitudes 0.01 / 0.05 (`sscc
 // selfccd --mesh ../shared/data/meshes/M.off --steps 20 --amplitude A --methods cones --threads
 // 1`): with the mean normal alone against with the axis, the knot 8.7k / 52.1k against 7.4k /
@@ -185,6 +186,9 @@ class PatchRadii {
   /// Node n's radius: no two of its triangles sharing no vertex touch during a step whose
   /// ends' scaled norms are below it (0 when none is proven).
   double node_radius(int n) const { return node_radius_[n]; }
+  /// Whether node n has a radius proven along its mean normal at rest (not a cone's axis,
+  /// cone_axis.hpp): the direction the cones formed per step are tried along (patch_cull.hpp).
+  bool proven_along_mean(int n) const { return along_mean_[n] != 0; }
   /// The radius of the disjoint nodes a and b together: no triangle of a touches one of b
   /// sharing no vertex with it during a step whose ends' scaled norms are below it (0 when
   /// none is proven): the larger of the union of the patches holding them and, for adjacent
@@ -232,9 +236,10 @@ class PatchRadii {
   double node_pair_radius(int a, int b) const { return node_pairs_.radius(a, b); }
 
   std::vector<double> node_radius_;
-  std::vector<int> patch_;       // per node: the largest node holding it with a radius, or -1
-  PairRadiusTable patch_pairs_;  // adjacent patches
-  PairRadiusTable node_pairs_;   // adjacent nodes under patches, where their union beats their patches'
+  std::vector<char> along_mean_;  // proven_along_mean per node
+  std::vector<int> patch_;        // per node: the largest node holding it with a radius, or -1
+  PairRadiusTable patch_pairs_;   // adjacent patches
+  PairRadiusTable node_pairs_;    // adjacent nodes under patches, where their union beats their patches'
   // Per patch, the largest radius patch_pair_radius can return for it; per node, the largest
   // of its node pairs (0 for none).
   std::vector<double> largest_patch_pair_, largest_node_pair_;

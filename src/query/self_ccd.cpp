@@ -285,9 +285,10 @@ class StepContext {
   /// norm (patch_radius.hpp), else formed from the positions (patch_cull.hpp).
   bool node_cannot_self_touch(int n) {
     if (radii_ && s_ < radii_->node_radius(n)) return ++stats_.cone_radius_culled, true;
-    // The cones formed per step only on nodes proven at rest: the others' normals rarely fit
-    // in a half-space during a step either, and their cones cost every normal below them.
-    return patch_cull_ && (!rest_patches_ || rest_patches_->node_radius(n) > 0.0) && patch_cull_->cannot_self_touch(n);
+    // The cones formed per step only on nodes proven at rest along their mean normal, the
+    // direction those cones take: the others' normals rarely fit in a half-space about it
+    // during a step either, and their cones cost every normal below them.
+    return patch_cull_ && (!rest_patches_ || rest_patches_->proven_along_mean(n)) && patch_cull_->cannot_self_touch(n);
   }
   bool nodes_cannot_touch(int a, int b) {
     if (radii_ && radii_->pair_below(a, b, s_)) {

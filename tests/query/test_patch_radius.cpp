@@ -31,11 +31,12 @@ namespace {
 using Eigen::Vector3d;
 using Eigen::VectorXd;
 
-/// The theorem's d for `triangles` (patch_radius.hpp): their area-weighted mean normal at rest,
-/// normalized, or the axis of a nearly smallest cone around their normals where it leans less
-/// from them (the library's choice, cone_axis.hpp: any unit d is the theorem's, and the radii
-/// below are checked against the theorem along the d the library takes).
-Vector3d theorem_direction(const sscc::SubspaceModel& model, const std::vector<int>& triangles) {
+/// The directions the library tries for `triangles` (patch_radius.hpp, cone_axis.hpp): their
+/// area-weighted mean normal at rest, normalized, and the axis of a nearly smallest cone around
+/// their normals where the library tries one (axis_to_try). Any unit d is the theorem's; the
+/// library keeps the larger radius, and the radii below are checked against the larger of the
+/// theorem's along these.
+std::vector<Vector3d> theorem_directions(const sscc::SubspaceModel& model, const std::vector<int>& triangles) {
   const std::vector<Vector3d>& rest = model.mesh().vertices();
   std::vector<Vector3d> normals;
   Vector3d sum = Vector3d::Zero();
@@ -44,8 +45,19 @@ Vector3d theorem_direction(const sscc::SubspaceModel& model, const std::vector<i
     normals.push_back((rest[f[1]] - rest[f[0]]).cross(rest[f[2]] - rest[f[0]]));
     sum += normals.back();
   }
-  return sscc::detail::set_direction(sum.normalized(), normals);
+  std::vector<Vector3d> directions{sum.normalized()};
+  const Vector3d axis = sscc::detail::axis_to_try(directions.front(), normals);
+  if (!axis.isZero()) {
+    REQUIRE(std::abs(axis.norm() - 1.0) < 1e-15);
+    directions.push_back(axis);
+  }
+  return directions;
 }
+
+/// The direction of theorem_directions along which the theorem's radius of `triangles` with
+/// boundary `chain` is largest (the first on a tie).
+Vector3d theorem_direction(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
+                           const std::vector<sscc::detail::DirectedEdge>& chain);
 
 /// Whether some triangle of `triangles` faces away from their mean normal, or lies along it,
 /// at rest: with the mean normal the set would have no radius.
@@ -199,7 +211,7 @@ TEST_CASE("patch radii: below a patch's radius its normals keep their side and i
       REQUIRE(std::isfinite(radius));
       const std::vector<int> triangles = triangles_of(bvh, n);
       const std::vector<Vector3d>& rest = mesh.vertices();
-      const Vector3d d = theorem_direction(model, triangles);
+      const Vector3d d = theorem_direction(model, triangles, boundaries.chain(n));
       const double s = 0.999 * radius;
       // Each triangle, in the direction that turns d . n fastest at rest: the gradient of
       // d . (e1 x e2) in q, -g with e1 x (E2 q) + (E1 q) x e2 (the basis's columns).
@@ -511,16 +523,17 @@ double triangle_root(const sscc::SubspaceModel& model, const Vector3d& d, const 
   return 2.0 * c / (a + std::sqrt(a * a + 4.0 * b * c));  // no cancellation
 }
 
-/// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp), its
-/// rounding terms left out (they move it by about 1e-14 relative): the smallest positive root
-/// of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over the boundary's
-/// vertex-edge pairs (but those (i) decides), along the set's direction (theorem_direction); 0 when the contour is not
-/// simple in projection at rest or a triangle faces away. `contour`, when given, receives the contour's part alone.
-double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
-                      const std::vector<sscc::detail::DirectedEdge>& chain, double* contour = nullptr) {
+/// The theorem's radius of the set `triangles` with boundary `chain` (patch_radius.hpp) along
+/// d, its rounding terms left out (they move it by about 1e-14 relative): the smallest
+/// positive root of c_T = A_T s + B_T s^2 over the triangles and of nu . (p - e) = N_pe s over
+/// the boundary's vertex-edge pairs (but those (i) decides); 0 when the contour is not simple
+/// in projection at rest or a triangle faces away. `contour`, when given, receives the
+/// contour's part alone.
+double theorem_radius_along(const sscc::SubspaceModel& model, const Vector3d& d, const std::vector<int>& triangles,
+                            const std::vector<sscc::detail::DirectedEdge>& chain, double* contour = nullptr) {
   const std::vector<Vector3d>& rest = model.mesh().vertices();
   const auto block = [&](int v) { return block_of(model, v); };
-  const Vector3d d = theorem_direction(model, triangles);
+  if (contour) *contour = 0.0;
   if (!sscc::detail::stays_simple_in_projection(d, chain, rest, rest)) return 0.0;
   double radius = std::numeric_limits<double>::infinity();
   for (int t : triangles) radius = std::min(radius, triangle_root(model, d, model.mesh().triangles()[t]));
@@ -536,6 +549,27 @@ double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& 
   });
   if (contour) *contour = contour_radius;
   return std::min(radius, contour_radius);
+}
+
+Vector3d theorem_direction(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
+                           const std::vector<sscc::detail::DirectedEdge>& chain) {
+  Vector3d best = Vector3d::Zero();
+  double largest = -1.0;
+  for (const Vector3d& d : theorem_directions(model, triangles)) {
+    const double radius = theorem_radius_along(model, d, triangles, chain);
+    if (radius > largest) {
+      best = d;
+      largest = radius;
+    }
+  }
+  return best;
+}
+
+/// The theorem's radius of `triangles` with boundary `chain` along theorem_direction, the
+/// larger of the directions the library tries. `contour` as in theorem_radius_along.
+double theorem_radius(const sscc::SubspaceModel& model, const std::vector<int>& triangles,
+                      const std::vector<sscc::detail::DirectedEdge>& chain, double* contour = nullptr) {
+  return theorem_radius_along(model, theorem_direction(model, triangles, chain), triangles, chain, contour);
 }
 
 /// How far a radius may exceed theorem_radius, relative: above the rounding of both
@@ -598,14 +632,15 @@ TEST_CASE("patch radii: hypothesis (i)'s quadratic bound holds the largest |d . 
     const auto& [bvh, boundaries, radii] = built;
     for (int n : patches(radii, boundaries, static_cast<int>(bvh.nodes().size()))) {
       const std::vector<int> triangles = triangles_of(bvh, n);
-      const Vector3d d = theorem_direction(model, triangles);
-      for (int t : triangles) {
-        const sscc::Triangle& f = model.mesh().triangles()[t];
-        const double exact = largest_quadratic(model, d, f);
-        const double bound = quadratic_bound(model, d, f);
-        REQUIRE(exact <= bound * (1.0 + 1e-12));
-        if (bound > 0.0) tightest = std::max(tightest, exact / bound);
-        ++checked;
+      for (const Vector3d& d : theorem_directions(model, triangles)) {
+        for (int t : triangles) {
+          const sscc::Triangle& f = model.mesh().triangles()[t];
+          const double exact = largest_quadratic(model, d, f);
+          const double bound = quadratic_bound(model, d, f);
+          REQUIRE(exact <= bound * (1.0 + 1e-12));
+          if (bound > 0.0) tightest = std::max(tightest, exact / bound);
+          ++checked;
+        }
       }
     }
   }
@@ -759,7 +794,7 @@ TEST_CASE(
       REQUIRE(radius >= expected * (1.0 - kTheoremShortfall));
       contour_decided += contour == expected;
       const double s = 0.999 * radius;
-      const Vector3d d = theorem_direction(model, triangles);
+      const Vector3d d = theorem_direction(model, triangles, chain);
       // The closing directions, each with its gap over its closing rate (the first to close).
       std::vector<std::pair<double, VectorXd>> closing;
       // Every pair, those hypothesis (i) decides too: some close along nu faster than the
