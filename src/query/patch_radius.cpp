@@ -415,9 +415,8 @@ struct SetRadius {
 
 /// The radius of a set of triangles with boundary `chain` (a simple cycle) and normal sum
 /// `normal_sum`: the smaller of its triangles' and its contour's along its mean normal, or
-/// along the axis axis_to_try gives where that proves the larger triangles' radius (the mean
-/// on a tie); 0 when it would not exceed `floor` (the contour, the costly part, is then not
-/// bounded).
+/// along the axis axis_to_try gives where that radius is larger (the mean on a tie); 0 when it
+/// would not exceed `floor` (the contour, the costly part, is then not bounded).
 template <typename Triangles>
 SetRadius set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, const std::vector<DirectedEdge>& chain,
                      Triangles for_each_triangle, double floor = 0.0) {
@@ -442,7 +441,7 @@ SetRadius set_radius(const RadiusBounds& bounds, const Vector3d& normal_sum, con
   const auto radius_along = [&](const Vector3d& d, double above) {
     double radius = std::numeric_limits<double>::infinity();
     for_each_triangle([&](int t) {
-      if (radius > 0.0) radius = std::min(radius, bounds.triangle_radius(d, t, radius));
+      if (radius > above) radius = std::min(radius, bounds.triangle_radius(d, t, radius));
     });
     if (!(radius > above)) return 0.0;
     const double with_contour = bounds.contour_radius(d, chain, small_fans, radius);

@@ -118,9 +118,10 @@
 //
 // Cost: built once per hierarchy, on every thread (SelfCcd::prepare, which builds them with
 // the rest of the culls' data for the `selfccd` command's four option sets, two threads, took
-// 1.66 s for the 15k-triangle lion, 1.79 s for the 20k dragon and 11.5 s for the 75k bunny;
-// 1.29 s, 1.33 s and 9.47 s before the cones' axes); a query tests a node in O(1) and a node
-// pair with at most two lookups in short contiguous lists (PairRadiusTable).
+// 1.67 s for the 15k-triangle lion, 1.97 s for the 20k dragon and 10.3 s for the 75k bunny;
+// 1.37 s, 1.59 s and 9.58 s before the cones' axes, timed alternately); a query tests a node
+// in O(1) and a node pair with at most two lookups in short contiguous lists
+// (PairRadiusTable).
 #pragma once
 
 #include <Eigen/Core>
@@ -186,8 +187,9 @@ class PatchRadii {
   /// Node n's radius: no two of its triangles sharing no vertex touch during a step whose
   /// ends' scaled norms are below it (0 when none is proven).
   double node_radius(int n) const { return node_radius_[n]; }
-  /// Whether node n has a radius proven along its mean normal at rest (not a cone's axis,
-  /// cone_axis.hpp): the direction the cones formed per step are tried along (patch_cull.hpp).
+  /// Whether node n's radius is the one its mean normal at rest proves (not a cone's axis,
+  /// cone_axis.hpp, which proved a larger one): the direction the cones formed per step take
+  /// (patch_cull.hpp). False for nodes without a radius.
   bool proven_along_mean(int n) const { return along_mean_[n] != 0; }
   /// The radius of the disjoint nodes a and b together: no triangle of a touches one of b
   /// sharing no vertex with it during a step whose ends' scaled norms are below it (0 when

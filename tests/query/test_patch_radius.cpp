@@ -678,6 +678,7 @@ TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' rad
           "[patch_radius]") {
   int nodes_checked = 0, pairs_checked = 0, node_pairs_checked = 0, leaf_pairs_checked = 0, bridged_pairs_checked = 0;
   int past_the_mean = 0;  // sets with a radius along a cone's axis where their mean normal fails
+  int axis_nodes = 0;     // nodes whose radius the axis proved (above the mean's, or where it fails)
   for (const sscc::SubspaceModel& model : models()) {
     const sscc::SubspaceBvh bvh(model);
     const sscc::detail::NodeBoundaries boundaries(bvh);
@@ -685,11 +686,20 @@ TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' rad
     for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
       if (radii.node_radius(n) == 0.0) continue;
       INFO("node " << n);
-      const double expected = theorem_radius(model, triangles_of(bvh, n), boundaries.chain(n));
+      const std::vector<int> triangles = triangles_of(bvh, n);
+      const double expected = theorem_radius(model, triangles, boundaries.chain(n));
       REQUIRE(radii.node_radius(n) <= expected * (1.0 + kTheoremExcess));
       REQUIRE(radii.node_radius(n) >= expected * (1.0 - kTheoremShortfall));
+      // A node tells which direction proved its radius: the radius is the theorem's along it.
+      const std::vector<Vector3d> directions = theorem_directions(model, triangles);
+      REQUIRE((radii.proven_along_mean(n) || directions.size() == 2));
+      const Vector3d& used = radii.proven_along_mean(n) ? directions.front() : directions.back();
+      const double along_used = theorem_radius_along(model, used, triangles, boundaries.chain(n));
+      REQUIRE(radii.node_radius(n) <= along_used * (1.0 + kTheoremExcess));
+      REQUIRE(radii.node_radius(n) >= along_used * (1.0 - kTheoremShortfall));
+      axis_nodes += !radii.proven_along_mean(n);
       ++nodes_checked;
-      past_the_mean += mean_normal_fails(model, triangles_of(bvh, n));
+      past_the_mean += mean_normal_fails(model, triangles);
     }
     const std::vector<int> all = patches(radii, boundaries, static_cast<int>(bvh.nodes().size()));
     for (std::size_t i = 0; i < all.size(); ++i) {
@@ -727,6 +737,7 @@ TEST_CASE("patch radii: every patch's, adjacent patches' and adjacent nodes' rad
   CHECK(node_pairs_checked > leaf_pairs_checked);
   CHECK(bridged_pairs_checked > 5);
   CHECK(past_the_mean > 5);
+  CHECK(axis_nodes > 10);
 }
 
 namespace {
