@@ -84,11 +84,12 @@
 // The step's norm s is computed in floating point too (relative error near 1e-15, inside the
 // margin). d must be unit to rounding: the contour's gaps are taken in the projection
 // I - d d^T, which with |d| off 1 keeps part of the extent along d (and the normals' quadratic
-// term is not scaled by |d|). The normalized sum of the set's area-weighted normals is: but a
-// sum whose squares are subnormal (total area below about 1e-154, coordinates near 1e-80) has
-// a plain norm off by up to tens of percent (measured: radii 1.2% above the theorem's); such a
-// set gets no radius. A cone's axis is a centre of length at least 1e-2 normalized
-// (cone_axis.hpp), unit to rounding whatever the normals' scale.
+// term is not scaled by |d|). The mean normal, the normalized sum of the set's area-weighted
+// normals, is unless the sum's squares are subnormal (total area below about 1e-154,
+// coordinates near 1e-80): its plain norm is then off by up to tens of percent (measured:
+// radii 1.2% above the theorem's), and such a set gets no radius. A cone's axis is a centre
+// of length at least 1e-2, normalized (cone_axis.hpp): unit to rounding whatever the normals'
+// scale.
 //
 // Which sets: every node of at least kSmallestConeNode triangles whose boundary is a simple cycle;
 // the union of every two patches sharing an edge (the largest nodes with a radius, each holding
@@ -107,10 +108,10 @@
 // angle from some triangle where the axis may not.
 // Measured, node tests per step of the cones query, 20 steps at amplitudes 0.01 / 0.05 (`sscc
 // selfccd --mesh ../shared/data/meshes/M.off --steps 20 --amplitude A --methods cones --threads
-// 1`): with the mean normal alone against with the axis, the knot 8.7k / 52.1k against 7.4k /
-// 49.7k, the dragon 47.1k / 128.5k against 29.8k / 121.8k, the elephant 16.3k / 26.5k against
-// 9.8k / 22.6k, the lion 16.6k / 38.0k against 7.6k / 34.2k, the 75k bunny 12.7k / 33.2k against
-// 6.6k / 25.8k; before and after the bridged sets and the pairs outside patches (the node pairs'
+// 1`): with the mean normal alone against with the axis too, the knot 8.7k / 52.1k against
+// 7.3k / 51.0k, the dragon 47.1k / 128.5k against 29.6k / 123.1k, the elephant 16.3k / 26.5k
+// against 9.8k / 22.9k, the lion 16.6k / 38.0k against 7.6k / 34.6k, the 75k bunny 12.7k /
+// 33.2k against 6.6k / 27.1k; before and after the bridged sets and the pairs outside patches (the node pairs'
 // radii tested on every step either way), the knot 11.8k / 69.6k against 8.9k / 66.4k, the
 // dragon 61.8k / 156.2k against 50.4k / 151.7k, the elephant 20.2k / 31.6k against 16.5k / 29.0k,
 // the lion 20.0k / 51.5k against 17.2k / 47.5k (about a third of the node pairs the traversal
