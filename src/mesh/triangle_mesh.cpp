@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/scaled_norm.hpp"
+
 namespace sscc {
 
 TriangleMesh::TriangleMesh(std::vector<Eigen::Vector3d> vertices, std::vector<Triangle> triangles)
@@ -73,7 +75,10 @@ Aabb TriangleMesh::bounding_box() const {
 double TriangleMesh::bounding_box_diagonal() const {
   if (vertices_.empty()) return 0.0;
   const Aabb box = bounding_box();
-  return (box.hi - box.lo).norm();
+  // Scaled: the squares of extents above about 1e154 overflow (a mesh in those units is rare,
+  // not invalid).
+  const Eigen::Vector3d extent = box.hi - box.lo;
+  return detail::length3(extent.x(), extent.y(), extent.z());
 }
 
 }  // namespace sscc

@@ -85,6 +85,17 @@ TEST_CASE("OFF: a quad cube is triangulated, with its connectivity", "[mesh]") {
   }
 }
 
+TEST_CASE("the bounding-box diagonal neither overflows nor underflows", "[mesh]") {
+  // One triangle spanning (s, s, s) at each scale: the diagonal is sqrt(3) s. Squaring the
+  // extents overflows above about 1e154 and underflows below about 1e-162.
+  for (const double s : {1.0, 1e150, 1e200, 1e300, 1e-170, 1e-300}) {
+    const sscc::TriangleMesh mesh({{0, 0, 0}, {s, 0, 0}, {s, s, s}}, {{0, 1, 2}});
+    INFO("scale " << s);
+    CHECK(std::isfinite(mesh.bounding_box_diagonal()));
+    CHECK(mesh.bounding_box_diagonal() / s == Approx(std::sqrt(3.0)).epsilon(1e-14));
+  }
+}
+
 TEST_CASE("OBJ: corner forms, negative indices, ignored statements", "[mesh]") {
   const std::string obj =
       "# comment\nmtllib x.mtl\no thing\n"
