@@ -154,6 +154,9 @@ bool winds_once_star_shaped(const Eigen::Vector3d& d, const std::vector<Directed
     if (from == 0 || to == 0) return false;
     crossings += from < 0 && to > 0;
   }
+#ifdef SSCC_MUTANT_CONTOUR_ANY_WINDING
+  return crossings >= 1;
+#endif
   return crossings == 1;
 }
 

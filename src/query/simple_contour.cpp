@@ -118,6 +118,9 @@ bool stays_simple_in_projection(const Vector3d& d, const std::vector<DirectedEdg
     const auto side = [&](int p, const DirectedEdge& g) { return certified_orientation(d, x0[p], x0[g[0]], x0[g[1]]); };
     const int f0 = side(f[0], e), f1 = side(f[1], e), e0 = side(e[0], f), e1 = side(e[1], f);
     if (f0 == 0 || f1 == 0 || e0 == 0 || e1 == 0) return false;
+#ifdef SSCC_MUTANT_CONTOUR_CROSSING_AT_START
+    return true;
+#endif
     return f0 == f1 || e0 == e1;
   };
 
