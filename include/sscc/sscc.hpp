@@ -24,5 +24,6 @@
 #include "sscc/query/pose_step_ccd.hpp"
 #include "sscc/query/position_ccd.hpp"
 #include "sscc/query/self_ccd.hpp"
+#include "sscc/scene/contact_geometry.hpp"
 #include "sscc/scene/scene.hpp"
 #include "sscc/threads.hpp"

@@ -179,6 +179,12 @@ class Scene {
   /// hierarchy and certificates) and returns its index.
   int add_object(const SelfCcd& detector, SceneObjectOptions options = {});
   int object_count() const { return static_cast<int>(objects_.size()); }
+  /// Object `object`'s detector (the scene's copy, sharing the one added) and options; throws
+  /// std::out_of_range for an index out of range.
+  const SelfCcd& detector(int object) const { return objects_.at(static_cast<std::size_t>(object)).detector; }
+  const SceneObjectOptions& object_options(int object) const {
+    return objects_.at(static_cast<std::size_t>(object)).options;
+  }
 
   /// One time step. `steps` holds one entry per object. Throws std::invalid_argument for a
   /// wrong count, q of the wrong size or with NaN/infinity, a frame that is not rigid, or a

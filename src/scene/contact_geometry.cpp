@@ -1,10 +1,12 @@
-#include "demo/contact_geometry.hpp"
+#include "sscc/scene/contact_geometry.hpp"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
-namespace sscc::validation {
+namespace sscc {
 
 namespace {
 
@@ -73,6 +75,27 @@ Eigen::Vector3d weighted(const std::array<double, 4>& w, const std::array<Eigen:
 
 }  // namespace
 
+std::array<int, 4> contact_vertices(const TriangleMesh& first_mesh, const TriangleMesh& second_mesh, FeatureKind kind,
+                                    int first, int second) {
+  const auto check = [](int index, int count, const char* what) {
+    if (index < 0 || index >= count) {
+      throw std::out_of_range("contact_vertices: " + std::string(what) + " " + std::to_string(index) +
+                              " out of range (" + std::to_string(count) + ")");
+    }
+  };
+  if (kind == FeatureKind::kVertexFace) {
+    check(first, first_mesh.vertex_count(), "vertex");
+    check(second, second_mesh.triangle_count(), "triangle");
+    const Triangle& t = second_mesh.triangles()[second];
+    return {first, t[0], t[1], t[2]};
+  }
+  check(first, static_cast<int>(first_mesh.edges().size()), "edge");
+  check(second, static_cast<int>(second_mesh.edges().size()), "edge");
+  const Edge& a = first_mesh.edges()[first];
+  const Edge& b = second_mesh.edges()[second];
+  return {a[0], a[1], b[0], b[1]};
+}
+
 ContactFrame contact_frame(FeatureKind kind, const std::array<Eigen::Vector3d, 4>& start,
                            const std::array<Eigen::Vector3d, 4>& end, double toi) {
   std::array<Eigen::Vector3d, 4> at;
@@ -109,4 +132,4 @@ double contact_gap(const ContactFrame& frame, const std::array<Eigen::Vector3d, 
   return frame.normal.dot(weighted(frame.weights, x));
 }
 
-}  // namespace sscc::validation
+}  // namespace sscc
