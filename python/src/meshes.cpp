@@ -4,10 +4,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "sscc/basis/modal_analysis.hpp"
+#include "sscc/mesh/excluded_pairs.hpp"
 #include "sscc/mesh/mesh_io.hpp"
 #include "sscc/model/basis_io.hpp"
 #include "sscc/model/polynomial_basis.hpp"
@@ -55,6 +59,77 @@ void bind_meshes(py::module_& m) {
       .def("__repr__", [](const TriangleMesh& mesh) {
         return "<sscc.TriangleMesh with " + std::to_string(mesh.vertex_count()) + " vertices and " +
                std::to_string(mesh.triangle_count()) + " triangles>";
+      });
+
+  static_assert(sizeof(std::pair<int, int>) == 2 * sizeof(int), "a pair is viewed as one row of two ints");
+  py::class_<ExcludedPairs>(m, "ExcludedPairs",
+                            "Triangle pairs that self-collision queries ignore besides the adjacent ones: on "
+                            "request, the non-adjacent pairs that already touch in the rest shape. A pair is "
+                            "considered when it is neither adjacent nor excluded; an excluded pair is never "
+                            "reported, while a feature it shares with a considered pair still is. Give it to "
+                            "SubspaceModel.excluding or PositionCcd. Immutable.")
+      .def(py::init([](int triangle_count, py::object pairs) {
+             const auto array = py::array::ensure(pairs);
+             if (!array || (array.dtype().kind() != 'i' && array.dtype().kind() != 'u')) {
+               throw py::value_error("pairs: expected an array of integers");
+             }
+             const auto rows = py::array_t<long long, py::array::forcecast>::ensure(array);
+             if (rows.size() != 0 && (rows.ndim() != 2 || rows.shape(1) != 2)) {
+               throw py::value_error("pairs: expected a (k, 2) array, got shape " + shape_text(rows));
+             }
+             std::vector<std::pair<int, int>> list;
+             if (rows.size() != 0) {
+               const auto r = rows.unchecked<2>();
+               for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+                 for (int k = 0; k < 2; ++k) {
+                   if (r(i, k) < 0 || r(i, k) >= triangle_count) {
+                     throw py::value_error("pairs: triangle " + std::to_string(r(i, k)) + " in row " +
+                                           std::to_string(i) + " is out of range (" + std::to_string(triangle_count) +
+                                           " triangles)");
+                   }
+                 }
+                 list.emplace_back(static_cast<int>(r(i, 0)), static_cast<int>(r(i, 1)));
+               }
+             }
+             return ExcludedPairs(triangle_count, std::move(list));
+           }),
+           py::arg("triangle_count"), py::arg("pairs"),
+           "The given pairs ((k, 2) integers, in either order, repeats merged) of a mesh of "
+           "triangle_count triangles. Raises ValueError for an index out of range or a pair (t, t).")
+      .def_static(
+          "touching_at_rest",
+          [](const TriangleMesh& mesh) {
+            py::gil_scoped_release release;
+            return ExcludedPairs::touching_at_rest(mesh);
+          },
+          py::arg("mesh"),
+          "The non-adjacent pairs of the mesh whose closed triangles share a point at its rest positions "
+          "(exact predicates): every such pair and no other.")
+      .def_property_readonly(
+          "pairs",
+          [](py::object self) {
+            const auto& pairs = self.cast<const ExcludedPairs&>().pairs();
+            return view(pairs.empty() ? nullptr : &pairs.front().first, {py::ssize_t(pairs.size()), 2},
+                        {py::ssize_t(sizeof(std::pair<int, int>)), py::ssize_t(sizeof(int))}, self);
+          },
+          "(k, 2) int32, sorted, first < second: the excluded pairs, a read-only view.")
+      .def_property_readonly("triangle_count", &ExcludedPairs::triangle_count,
+                             "The triangle count of the mesh the set was made for (0 for the empty set).")
+      .def(
+          "contains",
+          [](const ExcludedPairs& excluded, int a, int b) {
+            const int n = excluded.triangle_count();
+            if (!excluded.empty() && (a < 0 || a >= n || b < 0 || b >= n)) {
+              throw py::index_error("triangle out of range (" + std::to_string(n) + " triangles)");
+            }
+            return excluded.contains(a, b);
+          },
+          py::arg("a"), py::arg("b"),
+          "Whether the pair (a, b), in either order, is excluded. Raises IndexError for a triangle out of "
+          "range.")
+      .def("__len__", &ExcludedPairs::size)
+      .def("__repr__", [](const ExcludedPairs& excluded) {
+        return "<sscc.ExcludedPairs: " + std::to_string(excluded.size()) + " pairs>";
       });
 
   m.def(

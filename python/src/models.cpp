@@ -2,6 +2,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 
+#include <memory>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "sscc/bvh/subspace_bvh.hpp"
@@ -61,6 +63,37 @@ void bind_models(py::module_& m) {
            "finite.")
       .def_property_readonly("mesh", &SubspaceModel::mesh, py::return_value_policy::reference_internal,
                              "The model's mesh (kept alive by references to it).")
+      .def(
+          "excluding",
+          [](const SubspaceModel& model, const ExcludedPairs& excluded) { return model.excluding(excluded); },
+          py::arg("excluded"),
+          "This model (sharing its mesh and basis, no copy) with the pairs of `excluded` (ExcludedPairs) "
+          "ignored by every hierarchy, certificate and query built on it, like adjacent pairs; the "
+          "certificates' key records them. Raises ValueError when the set was made for a mesh of another "
+          "triangle count.")
+      .def(
+          "excluding_rest_contacts",
+          [](const SubspaceModel& model) {
+            py::gil_scoped_release release;
+            return model.excluding_rest_contacts();
+          },
+          "excluding(ExcludedPairs.touching_at_rest(mesh)): the non-adjacent pairs that touch in the rest "
+          "shape (exact test), for meshes that touch themselves at rest.")
+      .def_property_readonly("excluded_pairs", &SubspaceModel::excluded_pairs,
+                             py::return_value_policy::reference_internal,
+                             "The excluded pairs (ExcludedPairs; empty unless excluding() made this model).")
+      .def(
+          "considers",
+          [](const SubspaceModel& model, int a, int b) {
+            const int n = model.mesh().triangle_count();
+            if (a < 0 || a >= n || b < 0 || b >= n) {
+              throw py::index_error("triangle out of range (" + std::to_string(n) + " triangles)");
+            }
+            return model.considers(a, b);
+          },
+          py::arg("a"), py::arg("b"),
+          "Whether queries consider triangles a and b: neither adjacent nor excluded. Raises IndexError for "
+          "a triangle out of range.")
       .def_property_readonly("mode_count", &SubspaceModel::mode_count, "r, the number of modes.")
       .def_property_readonly(
           "weights",
@@ -99,16 +132,19 @@ void bind_models(py::module_& m) {
                std::to_string(model.mode_count()) + " modes>";
       });
 
-  py::class_<SubspaceBvh>(m, "SubspaceBvh",
-                          "A 4-ary bounding volume hierarchy over a model's triangles whose node boxes hold in "
-                          "every configuration q (built by k-means on rest positions and modes). Immutable.")
+  // Held by shared pointers, which detectors share (SelfCcd holds its hierarchy and certificates
+  // so): one copy however many detectors and Python references there are.
+  py::class_<SubspaceBvh, std::shared_ptr<SubspaceBvh>>(
+      m, "SubspaceBvh",
+      "A 4-ary bounding volume hierarchy over a model's triangles whose node boxes hold in "
+      "every configuration q (built by k-means on rest positions and modes). Immutable.")
       .def(py::init([](const SubspaceModel& model, std::uint64_t seed) {
              py::gil_scoped_release release;
-             return std::make_unique<SubspaceBvh>(model, seed);
+             return std::make_shared<SubspaceBvh>(model, seed);
            }),
-           py::arg("model"), py::arg("seed") = 1, py::keep_alive<1, 2>(),
-           "Builds the hierarchy; `seed` makes the k-means seeding reproducible. The model is kept alive "
-           "as long as the hierarchy.")
+           py::arg("model"), py::arg("seed") = 1,
+           "Builds the hierarchy; `seed` makes the k-means seeding reproducible. The hierarchy shares the "
+           "model's data (a model is a handle: no copy), which lives as long as either.")
       .def_property_readonly("model", &SubspaceBvh::model, py::return_value_policy::reference_internal,
                              "The model the hierarchy was built for.")
       .def_property_readonly(
@@ -122,11 +158,12 @@ void bind_models(py::module_& m) {
                std::to_string(bvh.build_stats().depth) + ">";
       });
 
-  py::class_<Certificates>(m, "Certificates",
-                           "Subspace self-collision certificates: for every node n of a hierarchy a radius R_n "
-                           "such that no two non-adjacent triangles under n touch while ||q||_M < R_n (and "
-                           "likewise for sibling pairs). Every radius is a lower bound of the true one. "
-                           "Immutable.")
+  py::class_<Certificates, std::shared_ptr<Certificates>>(
+      m, "Certificates",
+      "Subspace self-collision certificates: for every node n of a hierarchy a radius R_n "
+      "such that no two non-adjacent triangles under n touch while ||q||_M < R_n (and "
+      "likewise for sibling pairs). Every radius is a lower bound of the true one. "
+      "Immutable.")
       .def_static(
           "precompute",
           [](const SubspaceBvh& bvh, double epsilon, double global_radius_scale, py::object progress) {

@@ -10,6 +10,7 @@
 
 #include "arrays.hpp"
 #include "sscc/query/self_ccd.hpp"
+#include "sscc/scene/contact_geometry.hpp"
 
 namespace sscc::python {
 
@@ -42,6 +43,55 @@ FeatureArrays feature_arrays(const std::vector<Feature>& features, int Feature::
           index_columns(features, first, columns, owner), toi_column(features, owner)};
 }
 
+/// The contact points and normals of a report's feature contacts, one row per feature in the
+/// features' order (sscc/scene/contact_geometry.hpp): each feature's four vertices, their
+/// weights (the barycentric coordinates of the two contact points, +1 and -1 in sum), the
+/// first side's contact point at the time of impact and the unit normal there.
+struct ContactGeometry {
+  std::vector<std::array<int, 4>> vertices;
+  std::vector<std::array<double, 4>> barycentric;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3d> normals;
+
+  /// Adds the row of one feature contact whose four vertices are at `start` and `end` at the
+  /// two ends of the step.
+  void add(FeatureKind kind, const std::array<int, 4>& feature_vertices, const std::array<Eigen::Vector3d, 4>& start,
+           const std::array<Eigen::Vector3d, 4>& end, double toi) {
+    const ContactFrame frame = contact_frame(kind, start, end, toi);
+    const int first_side = kind == FeatureKind::kVertexFace ? 1 : 2;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    for (int i = 0; i < first_side; ++i) point += frame.weights[i] * ((1 - toi) * start[i] + toi * end[i]);
+    vertices.push_back(feature_vertices);
+    barycentric.push_back(frame.weights);
+    points.push_back(point);
+    normals.push_back(frame.normal);
+  }
+};
+
+/// A self query's report with its contact geometry (the Python SelfCcdReport).
+struct SelfReport : SelfCcdReport {
+  ContactGeometry geometry;
+};
+
+/// The geometry of a self report's features, for the vertex positions at both ends of its
+/// step given by position(vertex, end) (end 0 or 1) over `mesh`.
+template <typename Position>
+ContactGeometry self_contact_geometry(const TriangleMesh& mesh, const std::vector<FeatureContact>& features,
+                                      Position position) {
+  ContactGeometry geometry;
+  for (const FeatureContact& f : features) {
+    const std::array<int, 4> v = contact_vertices(mesh, mesh, f.kind, f.first, f.second);
+    std::array<Eigen::Vector3d, 4> start, end;
+    for (int i = 0; i < 4; ++i) start[i] = position(v[i], 0), end[i] = position(v[i], 1);
+    geometry.add(f.kind, v, start, end, f.toi);
+  }
+  return geometry;
+}
+
 void bind_feature_arrays(py::module_& m);
+/// The Python ContactGeometry class.
+void bind_contact_geometry(py::module_& m);
+/// SelfCcdReport's members (pairs, toi, features, geometry, earliest_toi, collided, stats).
+void bind_self_report(py::module_& m);
 
 }  // namespace sscc::python

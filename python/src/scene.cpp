@@ -1,9 +1,16 @@
 // Scene: many instances of precomputed models, each with its own q and rigid frame.
 #include <pybind11/stl.h>
 
+#include <array>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "bindings.hpp"
 #include "options.hpp"
 #include "reports.hpp"
+#include "sscc/scene/contact_geometry.hpp"
 #include "sscc/scene/scene.hpp"
 
 namespace sscc::python {
@@ -72,6 +79,74 @@ const char* outcome_name(SelfTestOutcome outcome) {
   return "unknown";
 }
 
+/// One object's self test in a scene step, its report with its contact geometry.
+struct ObjectResult {
+  SelfTestOutcome outcome = SelfTestOutcome::kNotReached;
+  SelfReport report;
+};
+
+/// A scene step's report with the contact geometry of every feature (the Python SceneReport).
+struct SceneResult {
+  std::vector<ObjectResult> objects;
+  std::vector<InterObjectContact> contacts;
+  std::vector<InterObjectFeature> features;
+  double earliest_toi = 1.0;
+  SceneStats stats;
+  bool collided = false;
+  ContactGeometry geometry;  ///< of the features between objects, in the world
+};
+
+/// The step's report with each feature's contact points and normals, from the positions the
+/// step's motion is linear in: x = p + U q at q0 and q1 in each object's frame for its self
+/// contacts (in the world, R x + t, for a world_linear object), in the world between objects.
+SceneResult with_geometry(const Scene& scene, const std::vector<ObjectStep>& steps, SceneReport report) {
+  SceneResult result;
+  result.collided = report.collided();
+  result.contacts = std::move(report.contacts);
+  result.features = std::move(report.features);
+  result.earliest_toi = report.earliest_toi;
+  result.stats = report.stats;
+  const std::size_t objects = report.objects.size();
+  // Each object's positions at the two ends of the step, in its frame or the world.
+  std::vector<std::array<Eigen::VectorXd, 2>> q_hat(objects);
+  const auto position = [&](std::size_t object, int v, int end, bool world) {
+    const SubspaceModel& model = scene.detector(static_cast<int>(object)).bvh().model();
+    if (q_hat[object][0].size() == 0 && model.mode_count() > 0) {
+      q_hat[object] = {model.scaled_coordinates(steps[object].q0), model.scaled_coordinates(steps[object].q1)};
+    }
+    const Eigen::Vector3d x =
+        model.mode_count() > 0 ? model.position(v, q_hat[object][end]) : model.mesh().vertices()[v];
+    if (!world) return x;
+    const RigidFrame& frame = end ? steps[object].frame1 : steps[object].frame0;
+    return Eigen::Vector3d(frame.rotation * x + frame.translation);
+  };
+  result.objects.resize(objects);
+  for (std::size_t o = 0; o < objects; ++o) {
+    result.objects[o].outcome = report.objects[o].outcome;
+    SelfReport& self = result.objects[o].report;
+    static_cast<SelfCcdReport&>(self) = std::move(report.objects[o].report);
+    if (self.features.empty()) continue;
+    const bool world = scene.object_options(static_cast<int>(o)).self_motion == SelfMotion::kWorldLinear;
+    self.geometry = self_contact_geometry(scene.detector(static_cast<int>(o)).bvh().model().mesh(), self.features,
+                                          [&](int v, int end) { return position(o, v, end, world); });
+  }
+  for (const InterObjectFeature& f : result.features) {
+    const auto first = static_cast<std::size_t>(f.object_first), second = static_cast<std::size_t>(f.object_second);
+    const std::array<int, 4> v =
+        contact_vertices(scene.detector(f.object_first).bvh().model().mesh(),
+                         scene.detector(f.object_second).bvh().model().mesh(), f.kind, f.first, f.second);
+    const int first_side = f.kind == FeatureKind::kVertexFace ? 1 : 2;
+    std::array<Eigen::Vector3d, 4> start, end;
+    for (int i = 0; i < 4; ++i) {
+      const std::size_t object = i < first_side ? first : second;
+      start[i] = position(object, v[i], 0, true);
+      end[i] = position(object, v[i], 1, true);
+    }
+    result.geometry.add(f.kind, v, start, end, f.toi);
+  }
+  return result;
+}
+
 py::dict stats_dict(const SceneStats& s) {
   py::dict d;
   d["objects_static"] = s.objects_static;
@@ -92,21 +167,22 @@ py::dict stats_dict(const SceneStats& s) {
 }  // namespace
 
 void bind_scene(py::module_& m) {
-  py::class_<ObjectSelfResult>(m, "SceneObjectResult", "One object's self-collision test in a scene step.")
+  py::class_<ObjectResult>(m, "SceneObjectResult", "One object's self-collision test in a scene step.")
       .def_property_readonly(
-          "outcome", [](const ObjectSelfResult& r) { return outcome_name(r.outcome); },
+          "outcome", [](const ObjectResult& r) { return outcome_name(r.outcome); },
           "'traversed' (the self query ran), 'certified' (the root certificate decided the step), "
           "'static' (the object did not move), 'switched_off' or 'not_reached' (mode 'any' stopped "
           "first).")
-      .def_readonly("report", &ObjectSelfResult::report, py::return_value_policy::reference_internal,
-                    "The self query's report (empty unless traversed).");
+      .def_readonly("report", &ObjectResult::report, py::return_value_policy::reference_internal,
+                    "The self query's report (empty unless traversed); its geometry is in the object's frame "
+                    "(in the world for a world_linear object).");
 
-  py::class_<SceneReport>(m, "SceneReport", "The result of a scene step. Arrays are read-only views into the report.")
+  py::class_<SceneResult>(m, "SceneReport", "The result of a scene step. Arrays are read-only views into the report.")
       .def_property_readonly(
           "objects",
           [](py::object self) {
             py::list results;
-            for (const ObjectSelfResult& r : self.cast<const SceneReport&>().objects) {
+            for (const ObjectResult& r : self.cast<const SceneResult&>().objects) {
               results.append(py::cast(&r, py::return_value_policy::reference_internal, self));
             }
             return results;
@@ -115,27 +191,30 @@ void bind_scene(py::module_& m) {
       .def_property_readonly(
           "pairs",
           [](py::object self) {
-            return index_columns(self.cast<const SceneReport&>().contacts, &InterObjectContact::object_first, 4, self);
+            return index_columns(self.cast<const SceneResult&>().contacts, &InterObjectContact::object_first, 4, self);
           },
           "(k, 4) int32: colliding triangles of two objects, rows (object_first, first, object_second, "
           "second) with object_first < object_second, sorted.")
       .def_property_readonly(
-          "toi", [](py::object self) { return toi_column(self.cast<const SceneReport&>().contacts, self); },
+          "toi", [](py::object self) { return toi_column(self.cast<const SceneResult&>().contacts, self); },
           "(k,) float64: each inter-object pair's time of impact.")
       .def_property_readonly(
           "features",
           [](py::object self) {
-            return feature_arrays(self.cast<const SceneReport&>().features, &InterObjectFeature::object_first, 4, self);
+            return feature_arrays(self.cast<const SceneResult&>().features, &InterObjectFeature::object_first, 4, self);
           },
           "Inter-object feature contacts (sscc.Features), indices rows (object_first, first, "
           "object_second, second): the vertex of object_first against the face of object_second, or "
           "two edges.")
-      .def_readonly("earliest_toi", &SceneReport::earliest_toi,
+      .def_readonly("geometry", &SceneResult::geometry, py::return_value_policy::reference_internal,
+                    "The inter-object features' contact points and normals in the world (sscc.ContactGeometry), "
+                    "one row per feature; each object's self contacts have theirs in objects[i].report.geometry.")
+      .def_readonly("earliest_toi", &SceneResult::earliest_toi,
                     "The earliest time of impact over everything (1.0 when nothing collided).")
-      .def_property_readonly("collided", &SceneReport::collided, "Whether anything collided.")
+      .def_readonly("collided", &SceneResult::collided, "Whether anything collided.")
       .def_property_readonly(
-          "stats", [](const SceneReport& r) { return stats_dict(r.stats); }, "The step's work as a dict.")
-      .def("__repr__", [](const SceneReport& r) {
+          "stats", [](const SceneResult& r) { return stats_dict(r.stats); }, "The step's work as a dict.")
+      .def("__repr__", [](const SceneResult& r) {
         return "<sscc.SceneReport: " + std::to_string(r.objects.size()) + " objects, " +
                std::to_string(r.contacts.size()) + " inter-object pairs>";
       });
@@ -161,13 +240,25 @@ void bind_scene(py::module_& m) {
             return scene.add_object(detector, options);
           },
           py::arg("detector"), py::kw_only(), py::arg("self_collision") = true, py::arg("inter_object") = true,
-          py::arg("self_motion") = "object_frame", py::keep_alive<1, 2>(),
-          "Adds an instance of a detector (kept alive as long as the scene) and returns its index. "
+          py::arg("self_motion") = "object_frame",
+          "Adds an instance of a detector (the scene holds a copy that shares its hierarchy and "
+          "certificates: no copy of them) and returns its index. "
           "self_collision / inter_object switch its tests off. self_motion: the vertex motion of its self "
           "test, 'object_frame' (linear in q in the object's frame, which moves rigidly; steps turning the "
           "frame by more than max_object_frame_rotation are refused) or 'world_linear' (straight lines in "
           "world space, as between objects).")
       .def_property_readonly("object_count", &Scene::object_count, "Number of objects.")
+      .def(
+          "detector",
+          [](const Scene& scene, int object) {
+            if (object < 0 || object >= scene.object_count()) {
+              throw py::index_error("object " + std::to_string(object) + " out of range");
+            }
+            return &scene.detector(object);
+          },
+          py::arg("object"), py::return_value_policy::reference_internal,
+          "Object `object`'s detector (the scene's copy, sharing the added detector's hierarchy and "
+          "certificates). Raises IndexError for an index out of range.")
       .def("__repr__",
            [](const Scene& scene) { return "<sscc.Scene of " + std::to_string(scene.object_count()) + " objects>"; })
       .def(
@@ -194,7 +285,7 @@ void bind_scene(py::module_& m) {
             options.kernel = kernel_options(toi_tolerance, minimum_separation);
             options.max_object_frame_rotation = max_object_frame_rotation;
             py::gil_scoped_release release;
-            return scene.step(steps, options);
+            return with_geometry(scene, steps, scene.step(steps, options));
           },
           py::arg("q0"), py::arg("q1"), py::arg("frames0") = py::none(), py::arg("frames1") = py::none(), py::kw_only(),
           py::arg("mode") = "all", py::arg("use_certificates") = true,
@@ -204,7 +295,8 @@ void bind_scene(py::module_& m) {
           "frames0, frames1: None (identity frames) or one frame per object, each None, a 4x4 "
           "homogeneous matrix or a pair (R, t). mode and the kernel options as in SelfCcd.query. Raises "
           "ValueError for a wrong count, q of the wrong size or not finite, a frame that is not rigid, or "
-          "an object-frame self test whose frame turns by more than max_object_frame_rotation (radians).");
+          "an object-frame self test whose frame turns by more than max_object_frame_rotation (radians). "
+          "Every feature contact comes with its contact points and normal (the reports' geometry).");
 }
 
 }  // namespace sscc::python
