@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test: the Release build in build/, then the same tests
+# Sets up, builds and runs every test: the Release build in build/, the Python package
+# installed with pip into a fresh virtual environment and tested there
+# (scripts/python_package.sh), then the same tests
 # under AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ (without the
 # Python module: an instrumented extension would need the sanitizer runtime preloaded), then
 # the tests of what runs on several threads under ThreadSanitizer in build-tsan/
@@ -14,8 +16,12 @@ bash scripts/setup.sh
 # Where the data beside the repository is present, the tests that need it must find it: a
 # missing file fails them instead of skipping them (tests/support/shared_data.hpp).
 if [ -d ../shared ]; then export SSCC_REQUIRE_SHARED_DATA=1; fi
-bash scripts/build.sh -DSSCC_WARNINGS_AS_ERRORS=ON
+# The Release build goes through ccache (depend mode: no extra preprocessor run on a miss), so
+# that the Python package's own CMake build (pip install ., the same flags) finds its objects.
+export CCACHE_DEPEND=1
+bash scripts/build.sh -DSSCC_WARNINGS_AS_ERRORS=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 (cd build && ctest --output-on-failure -j "$(nproc)")
+SSCC_CMAKE_ARGS="-DSSCC_WARNINGS_AS_ERRORS=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache" bash scripts/python_package.sh
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSCC_SANITIZE=ON \
   -DSSCC_BUILD_VALIDATION=OFF -DSSCC_BUILD_PYTHON=OFF
 cmake --build build-sanitize -j "$(nproc)"
