@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test: the Release build in build/, the Python package
+# Sets up, builds and runs every test: the Release build in build/ (its tests include the
+# README's commands and the API reference without Doxygen warnings), the Python package
 # installed with pip into a fresh virtual environment and tested there
 # (scripts/python_package.sh), then the same tests
 # under AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ (without the
