@@ -47,16 +47,21 @@ for name in "${order[@]}"; do
 done
 
 # The translation units that hold a mutant's hook or include the file that does, read from
-# the dependency files of the unmutated build (paths there are relative to the directory the
-# compiler ran in, the one above CMakeFiles/).
+# the dependency files of the unmutated build (paths there are absolute, or, when ccache has a
+# base_dir, relative to the directory the compiler ran in, the one above CMakeFiles/).
 units_of() {
-  local hooks depfile hook
+  local hooks depfile hook source
   mapfile -t hooks < <(grep -rl "SSCC_MUTANT_$1\b" src ccd_kernels include)
   find build-mutant-unmutated -name '*.o.d' | while read -r depfile; do
     for hook in "${hooks[@]}"; do
       if grep -q "/$(basename "$hook")\b" "$depfile"; then
-        # The source is the first name after "target:" (on the first or the second line).
-        realpath "${depfile%%/CMakeFiles/*}/$(head -2 "$depfile" | tr -d '\\' | tr '\n' ' ' | awk '{print $2}')"
+        # The source is the first name after "target:" (on the first or the second line):
+        # relative (ccache with a base_dir rewrites paths so) or absolute.
+        source=$(head -2 "$depfile" | tr -d '\\' | tr '\n' ' ' | awk '{print $2}')
+        case "$source" in
+          /*) realpath "$source" ;;
+          *) realpath "${depfile%%/CMakeFiles/*}/$source" ;;
+        esac
         break
       fi
     done
