@@ -10,7 +10,9 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "basis_command.hpp"
@@ -50,6 +52,14 @@ const char* kUsage =
     "            --epsilon E            relative accuracy of the radii (default 0.1)\n"
     "            --global-scale G       radii resolved up to G times the global radius (default 1)\n"
     "            --output FILE.sscc     the certificate file\n"
+    "            --shard I/N            only shard I of N (0 <= I < N): the subtrees below a split\n"
+    "                                   depth dealt to N processes or machines; --output then\n"
+    "                                   names the shard file (FILE.sscc-part), for merge\n"
+    "  merge     the certificate file from the shard files of precompute --shard, byte for byte\n"
+    "            the one precompute writes (the levels above the split depth are computed here)\n"
+    "            --mesh FILE --basis B --weights FILE   the model, as for precompute\n"
+    "            --output FILE.sscc     the certificate file\n"
+    "            SHARD-FILE ...         the N shard files, in any order\n"
     "  certificates  run time against error of the certificates: for each epsilon, precompute,\n"
     "            then SSCC against the traditional query on one trajectory (CSV and plot)\n"
     "            --mesh FILE --basis B --weights FILE   the model\n"
@@ -281,10 +291,28 @@ sscc::validation::ModelSource model_source(const Flags& flags) {
   return source;
 }
 
+/// "I/N" with 0 <= I < N.
+std::pair<int, int> shard_of(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  try {
+    std::size_t used_index = 0, used_count = 0;
+    const int index = std::stoi(text.substr(0, slash), &used_index);
+    const int count = std::stoi(text.substr(slash + 1), &used_count);
+    if (slash == std::string::npos || used_index != slash || used_count != text.size() - slash - 1 || index < 0 ||
+        index >= count) {
+      throw std::invalid_argument(text);
+    }
+    return {index, count};
+  } catch (const std::exception&) {
+    usage_error("--shard expects I/N with 0 <= I < N, got '" + text + "'");
+  }
+}
+
 int run_precompute(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(
-      args, {"--mesh", "--basis", "--weights", "--epsilon", "--global-scale", "--output", "--exclude-rest-contacts"},
-      "precompute");
+  const Flags flags = parse_flags(args,
+                                  {"--mesh", "--basis", "--weights", "--epsilon", "--global-scale", "--output",
+                                   "--exclude-rest-contacts", "--shard"},
+                                  "precompute");
   if (!flags.has("--mesh")) usage_error("precompute needs --mesh FILE");
   if (!flags.has("--output")) usage_error("precompute needs --output FILE.sscc");
   sscc::validation::PrecomputeCommandOptions options;
@@ -292,7 +320,30 @@ int run_precompute(const std::vector<std::string>& args) {
   options.output = flags.text("--output");
   if (flags.has("--epsilon")) options.parameters.epsilon = flags.number<double>("--epsilon");
   if (flags.has("--global-scale")) options.parameters.global_radius_scale = flags.number<double>("--global-scale");
+  if (flags.has("--shard")) std::tie(options.shard_index, options.shard_count) = shard_of(flags.text("--shard"));
   return run_report(options, flags.quiet, sscc::validation::run_precompute, "precompute");
+}
+
+int run_merge(const std::vector<std::string>& args) {
+  // The shard files are the arguments that are neither a flag nor a flag's value.
+  std::vector<std::string> flag_args;
+  sscc::validation::MergeCommandOptions options;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i].rfind("--", 0) != 0) {
+      options.shards.push_back(args[i]);
+      continue;
+    }
+    flag_args.push_back(args[i]);
+    if (args[i] != "--quiet" && kSwitches.count(args[i]) == 0 && i + 1 < args.size()) flag_args.push_back(args[++i]);
+  }
+  const Flags flags =
+      parse_flags(flag_args, {"--mesh", "--basis", "--weights", "--output", "--exclude-rest-contacts"}, "merge");
+  if (!flags.has("--mesh")) usage_error("merge needs --mesh FILE");
+  if (!flags.has("--output")) usage_error("merge needs --output FILE.sscc");
+  if (options.shards.empty()) usage_error("merge needs the shard files");
+  options.model = model_source(flags);
+  options.output = flags.text("--output");
+  return run_report(options, flags.quiet, sscc::validation::run_merge, "merge");
 }
 
 std::vector<double> number_list(const std::string& flag, const std::string& list) {
@@ -559,6 +610,7 @@ int main(int argc, char** argv) {
     if (command == "kernels") return run_kernels(args);
     if (command == "selfccd") return run_selfccd(args);
     if (command == "precompute") return run_precompute(args);
+    if (command == "merge") return run_merge(args);
     if (command == "certificates") return run_certificate_sweep(args);
     if (command == "basis") return run_basis(args);
     if (command == "decimate") return run_decimate(args);
