@@ -20,6 +20,7 @@
 #include "certificate_sweep.hpp"
 #include "decimate_command.hpp"
 #include "demo/demo_command.hpp"
+#include "kernel_seed_range.hpp"
 #include "kernel_validation.hpp"
 #include "poses_command.hpp"
 #include "precompute_command.hpp"
@@ -46,6 +47,10 @@ const char* kUsage =
     "            --search-slow N hill-climb N steps per kind for the slowest query\n"
     "            --exponent-range E  coordinates the search makes stay within 2^-E..2^E (default 1074)\n"
     "            --separation-only   with --random: only the minimum-separation sweep, on the same queries\n"
+    "            --seeds A:B     instead: the check against the exact reference of seeds A..B-1, each\n"
+    "                            seed its own queries (--per-seed N random ones of each kind, default\n"
+    "                            1000, and N/10 near-degenerate), so that ranges split a long run:\n"
+    "                            the counts of A:B and B:C add up to those of A:C\n"
     "            --quiet         no progress output\n"
     "  precompute  the certificates of a model, written to a certificate file\n"
     "            --mesh FILE --basis B --weights FILE   the model, as for selfccd\n"
@@ -249,11 +254,39 @@ int run_report(const Options& options, bool quiet, Report report, const std::str
   return 0;
 }
 
+/// "A:B" with A < B.
+std::pair<std::uint64_t, std::uint64_t> seed_range(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  try {
+    std::size_t used_begin = 0, used_end = 0;
+    const std::uint64_t begin = std::stoull(text.substr(0, colon), &used_begin);
+    const std::uint64_t end = std::stoull(text.substr(colon + 1), &used_end);
+    if (colon == std::string::npos || used_begin != colon || used_end != text.size() - colon - 1 || begin >= end ||
+        text[0] == '-' || text[colon + 1] == '-') {
+      throw std::invalid_argument(text);
+    }
+    return {begin, end};
+  } catch (const std::exception&) {
+    usage_error("--seeds expects A:B with 0 <= A < B, got '" + text + "'");
+  }
+}
+
 int run_kernels(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(args,
                                   {"--queries", "--random", "--seed", "--output", "--repeats", "--search-slow",
-                                   "--exponent-range", "--separation-only"},
+                                   "--exponent-range", "--separation-only", "--seeds", "--per-seed"},
                                   "kernels");
+  if (flags.has("--seeds")) {
+    for (const char* other : {"--queries", "--random", "--seed", "--search-slow", "--separation-only"}) {
+      if (flags.has(other) || flags.on(other)) usage_error(std::string("kernels --seeds does not take ") + other);
+    }
+    sscc::validation::SeedRangeOptions range;
+    std::tie(range.begin, range.end) = seed_range(flags.text("--seeds"));
+    if (flags.has("--per-seed")) range.per_seed = flags.number<long>("--per-seed");
+    if (range.per_seed < 1) usage_error("--per-seed must be positive");
+    return run_report(range, flags.quiet, sscc::validation::run_seed_range, "kernels");
+  }
+  if (flags.has("--per-seed")) usage_error("--per-seed goes with --seeds A:B");
   sscc::validation::KernelValidationOptions options;
   if (flags.has("--queries")) options.queries_dir = flags.text("--queries");
   if (flags.has("--random")) options.random = flags.number<long>("--random");
