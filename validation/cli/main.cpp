@@ -24,6 +24,7 @@
 #include "kernel_validation.hpp"
 #include "poses_command.hpp"
 #include "precompute_command.hpp"
+#include "scale_command.hpp"
 #include "selfccd_validation.hpp"
 #include "sscc/threads.hpp"
 #include "stress/stress_command.hpp"
@@ -172,6 +173,14 @@ const char* kUsage =
     "            --seed S               default 1\n"
     "            --load-steps N         steps of the long scene run (default 100000)\n"
     "            --case N               only case N of the table (no long run)\n"
+    "  scale     how the pipeline grows with the mesh: the 27 polynomial modes, hierarchy, default\n"
+    "            certificates and query steps on one mesh, timed, with the process's peak memory;\n"
+    "            the line 'scale: triangles=N ... peak_rss_mb=X' (scripts/scale.sh: a table of sizes)\n"
+    "            --triangles N          a latitude-longitude sphere of about N triangles (default 10000)\n"
+    "            --mesh FILE            a mesh file instead\n"
+    "            --steps N              query steps (default 100)\n"
+    "            --amplitude A          the trajectory's ||q||_M in root radii (default 2)\n"
+    "            --seed S               the trajectory's (default 1)\n"
     "  help      this text\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -593,6 +602,18 @@ int run_stress(std::vector<std::string> args) {
   return run_report(options, flags.quiet, sscc::validation::run_stress, "stress");
 }
 
+int run_scale(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args, {"--triangles", "--mesh", "--steps", "--amplitude", "--seed"}, "scale");
+  sscc::validation::ScaleOptions options;
+  if (flags.has("--triangles")) options.triangles = flags.number<long>("--triangles");
+  if (flags.has("--mesh")) options.mesh = flags.text("--mesh");
+  if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
+  if (flags.has("--amplitude")) options.amplitude = flags.number<double>("--amplitude");
+  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
+  if (options.steps <= 0) usage_error("--steps must be positive");
+  return run_report(options, flags.quiet, sscc::validation::run_scale, "scale");
+}
+
 int run_selfccd(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(args,
                                   {"--mesh", "--basis", "--weights", "--steps", "--amplitude", "--burst", "--seed",
@@ -651,6 +672,7 @@ int main(int argc, char** argv) {
     if (command == "bench") return run_bench(args);
     if (command == "poses") return run_poses(args);
     if (command == "stress") return run_stress(args);
+    if (command == "scale") return run_scale(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;
