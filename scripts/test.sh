@@ -12,6 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh -DSSCC_WARNINGS_AS_ERRORS=ON
+export SSCC_REQUIRE_DASK=1  # setup.sh installed Dask: its tests run (python/tests/test_dask.py)
 (cd build && ctest --output-on-failure -j "$(nproc)")
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSCC_SANITIZE=ON \
   -DSSCC_BUILD_VALIDATION=OFF -DSSCC_BUILD_PYTHON=OFF
