@@ -100,12 +100,14 @@ void bind_models(py::module_& m) {
                std::to_string(model.mode_count()) + " modes>";
       });
 
-  py::class_<SubspaceBvh>(m, "SubspaceBvh",
-                          "A 4-ary bounding volume hierarchy over a model's triangles whose node boxes hold in "
-                          "every configuration q (built by k-means on rest positions and modes). Immutable.")
+  // Hierarchies and certificates are held by shared pointers, which detectors share (no copy).
+  py::class_<SubspaceBvh, std::shared_ptr<SubspaceBvh>>(
+      m, "SubspaceBvh",
+      "A 4-ary bounding volume hierarchy over a model's triangles whose node boxes hold in "
+      "every configuration q (built by k-means on rest positions and modes). Immutable.")
       .def(py::init([](const SubspaceModel& model, std::uint64_t seed) {
              py::gil_scoped_release release;
-             return std::make_unique<SubspaceBvh>(model, seed);
+             return std::make_shared<SubspaceBvh>(model, seed);
            }),
            py::arg("model"), py::arg("seed") = 1, py::keep_alive<1, 2>(),
            "Builds the hierarchy; `seed` makes the k-means seeding reproducible. The model is kept alive "
@@ -123,11 +125,12 @@ void bind_models(py::module_& m) {
                std::to_string(bvh.build_stats().depth) + ">";
       });
 
-  py::class_<Certificates>(m, "Certificates",
-                           "Subspace self-collision certificates: for every node n of a hierarchy a radius R_n "
-                           "such that no two non-adjacent triangles under n touch while ||q||_M < R_n (and "
-                           "likewise for sibling pairs). Every radius is a lower bound of the true one. "
-                           "Immutable.")
+  py::class_<Certificates, std::shared_ptr<Certificates>>(
+      m, "Certificates",
+      "Subspace self-collision certificates: for every node n of a hierarchy a radius R_n "
+      "such that no two non-adjacent triangles under n touch while ||q||_M < R_n (and "
+      "likewise for sibling pairs). Every radius is a lower bound of the true one. "
+      "Immutable.")
       .def_static(
           "precompute",
           [](const SubspaceBvh& bvh, double epsilon, double global_radius_scale, py::object progress) {

@@ -98,12 +98,15 @@ void bind_queries(py::module_& m) {
                       "q0 -> q1, culled by certificates when given (otherwise by the step's displacements, mode by "
                       "mode). Nothing is missed for the positions as computed. Immutable; queries release the "
                       "GIL and may run from several threads.")
-      .def(py::init([](const SubspaceBvh& bvh, const Certificates* certificates) {
-             return certificates ? std::make_unique<SelfCcd>(bvh, *certificates) : std::make_unique<SelfCcd>(bvh);
+      .def(py::init([](std::shared_ptr<SubspaceBvh> bvh, std::shared_ptr<Certificates> certificates) {
+             if (!bvh) throw py::value_error("SelfCcd: no hierarchy");
+             py::gil_scoped_release release;
+             return std::make_unique<SelfCcd>(std::move(bvh), std::move(certificates));
            }),
            py::arg("bvh"), py::arg("certificates") = py::none(), py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
-           "A detector for the hierarchy, with or without certificates (kept alive as long as the "
-           "detector). Raises ValueError when the certificates belong to another model or hierarchy.")
+           "A detector for the hierarchy, with or without certificates (shared, not copied: kept alive "
+           "as long as the detector). Raises ValueError when the certificates belong to another model or "
+           "hierarchy.")
       .def_property_readonly("bvh", &SelfCcd::bvh, py::return_value_policy::reference_internal, "The hierarchy.")
       .def_property_readonly("certificates", &SelfCcd::certificates, py::return_value_policy::reference_internal,
                              "The certificates, or None.")

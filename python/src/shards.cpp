@@ -63,7 +63,8 @@ void bind_shards(py::module_& m) {
                " of " + std::to_string(shard.subtree_roots().size()) + " subtrees>";
       });
 
-  auto certificates = py::reinterpret_borrow<py::class_<Certificates>>(m.attr("Certificates"));
+  auto certificates =
+      py::reinterpret_borrow<py::class_<Certificates, std::shared_ptr<Certificates>>>(m.attr("Certificates"));
   certificates
       .def_static(
           "precompute_shard",
