@@ -1,5 +1,5 @@
-// `sscc scale`: how the pipeline grows with the mesh. For one mesh (a generated sphere of
-// about N triangles, the stress suite's generator, or a mesh file): the model with the 27
+// `sscc scale`: how the pipeline grows with the mesh. For one mesh (a geodesic sphere of
+// about N triangles, from the stress suite's generators, or a mesh file): the model with the 27
 // polynomial modes (unit weights, as `sscc precompute` builds it), the hierarchy, the default
 // certificates, a detector, then a seeded random trajectory of query steps at a multiple of
 // the root's radius (the traversal then runs on most steps), printing the line
@@ -17,7 +17,7 @@
 namespace sscc::validation {
 
 struct ScaleOptions {
-  long triangles = 10000;  ///< about this many, on a latitude-longitude sphere
+  long triangles = 10000;  ///< about this many, on a geodesic sphere
   std::string mesh;        ///< a mesh file instead ("" for the sphere)
   int modes = 27;          ///< polynomial modes
   int steps = 100;

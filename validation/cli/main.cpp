@@ -176,7 +176,7 @@ const char* kUsage =
     "  scale     how the pipeline grows with the mesh: the 27 polynomial modes, hierarchy, default\n"
     "            certificates and query steps on one mesh, timed, with the process's peak memory;\n"
     "            the line 'scale: triangles=N ... peak_rss_mb=X' (scripts/scale.sh: a table of sizes)\n"
-    "            --triangles N          a latitude-longitude sphere of about N triangles (default 10000)\n"
+    "            --triangles N          a geodesic sphere of about N triangles (default 10000)\n"
     "            --mesh FILE            a mesh file instead\n"
     "            --steps N              query steps (default 100)\n"
     "            --amplitude A          the trajectory's ||q||_M in root radii (default 2)\n"
