@@ -3,7 +3,7 @@
 set -euo pipefail
 
 packages=(build-essential cmake libeigen3-dev libgmp-dev catch2 libfcl-dev libccd-dev gnuplot-nox libspectra-dev libtet1.5-dev libopenmesh-dev libsndfile1-dev
-          python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-distributed
           python3-venv python3-pip python3-setuptools-whl python3-wheel-whl ccache doxygen
           clang libclang-rt-14-dev libomp-dev clang-format)
 missing=()

@@ -21,6 +21,7 @@ if [ -d ../shared ]; then export SSCC_REQUIRE_SHARED_DATA=1; fi
 # that the Python package's own CMake build (pip install ., the same flags) finds its objects.
 export CCACHE_DEPEND=1
 bash scripts/build.sh -DSSCC_WARNINGS_AS_ERRORS=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
+export SSCC_REQUIRE_DASK=1  # setup.sh installed Dask: its tests run (python/tests/test_dask.py)
 (cd build && ctest --output-on-failure -j "$(nproc)")
 SSCC_CMAKE_ARGS="-DSSCC_WARNINGS_AS_ERRORS=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache" bash scripts/python_package.sh
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSCC_SANITIZE=ON \

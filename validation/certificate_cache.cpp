@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "progress_bar.hpp"
 #include "sscc/common/timing.hpp"
 
 namespace sscc::validation {
@@ -21,13 +22,9 @@ CachedCertificates read_or_precompute_certificates(const SubspaceBvh& bvh, const
   }
   progress << who << ": precomputing certificates (" << why << ")\n";
   const auto start = std::chrono::steady_clock::now();
-  CachedCertificates made{Certificates::precompute(bvh, {},
-                                                   [&](int done, int levels) {
-                                                     progress << who << ": certificates: level " << done << "/"
-                                                              << levels << " done\n"
-                                                              << std::flush;
-                                                   }),
-                          0.0};
+  ProgressBar bar(progress, who + ": certificates");
+  CachedCertificates made{Certificates::precompute(bvh, {}, precompute_progress(bar)), 0.0};
+  bar.finish();
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
   made.certificates.write(path);

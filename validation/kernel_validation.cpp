@@ -19,6 +19,7 @@
 #include "fcl_kernels.hpp"
 #include "min_distance.hpp"
 #include "plot.hpp"
+#include "progress_bar.hpp"
 #include "query_generators.hpp"
 #include "query_set.hpp"
 #include "slow_query_search.hpp"
@@ -133,14 +134,16 @@ long report_generated(const std::string& label, Kind kind, const std::vector<Que
   std::vector<bool> truth;
   long disagreements = 0;
   std::array<long, ccd::kDecidedByCount> stages{};
+  ProgressBar bar(progress, std::string("kernels: ") + label + " " + to_string(kind) + " against the reference");
   for (std::size_t i = 0; i < queries.size(); ++i) {
     bool contact = false;
     const std::string problem = disagreement_with_reference(queries[i], {}, &contact);
     truth.push_back(contact);
     if (!problem.empty() && ++disagreements <= 5) out << "disagreement: " << problem << '\n';
     ++stages[static_cast<int>(run_kernel(queries[i]).decided_by)];
-    if ((i + 1) % 200000 == 0) progress << "  " << (i + 1) << " done\n";
+    bar.update(static_cast<double>(i + 1), static_cast<double>(queries.size()));
   }
+  bar.finish();
   for (const auto& [name, answer] : Methods().list) {
     Tally t;
     for (std::size_t i = 0; i < queries.size(); ++i) t.add(answer(queries[i]), truth[i]);

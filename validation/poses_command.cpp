@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "progress_bar.hpp"
 #include "sscc/experimental/cull_validation.hpp"
 #include "sscc/experimental/node_collisions.hpp"
 #include "sscc/mesh/mesh_io.hpp"
@@ -121,9 +122,9 @@ long run_poses(const PosesCommandOptions& o, std::ostream& out, std::ostream& pr
   const SubspaceModel model = subspace.model();
   const SubspaceBvh bvh(model);
   progress << "bvh: " << bvh.build_stats().nodes << " nodes, depth " << bvh.build_stats().depth << '\n';
-  const Certificates certificates = Certificates::precompute(bvh, o.certificates, [&](int done, int levels) {
-    progress << "precompute: level " << done << "/" << levels << " done\n" << std::flush;
-  });
+  ProgressBar bar(progress, "precompute");
+  const Certificates certificates = Certificates::precompute(bvh, o.certificates, precompute_progress(bar));
+  bar.finish();
 
   progress << "ground truth: exact discrete test of " << o.training + o.held_out << " poses\n" << std::flush;
   const std::vector<std::vector<char>> training_truth = ground_truth(bvh, training_q);

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
+
+#include "progress_bar.hpp"
+#include "sscc/certificates/certificate_shards.hpp"
 
 namespace sscc::validation {
 
@@ -20,14 +24,12 @@ void print_radius_per_level(const SubspaceBvh& bvh, const Certificates& certific
   }
 }
 
-long run_precompute(const PrecomputeCommandOptions& o, std::ostream& out, std::ostream& progress) {
-  const SubspaceModel model = load_model(o.model, progress);
-  const SubspaceBvh bvh(model);
-  progress << "bvh: " << bvh.build_stats().nodes << " nodes, depth " << bvh.build_stats().depth << '\n';
-  const Certificates certificates = Certificates::precompute(bvh, o.parameters, [&](int done, int levels) {
-    progress << "precompute: level " << done << "/" << levels << " done\n" << std::flush;
-  });
-  certificates.write(o.output);
+namespace {
+
+/// The statistics, a warning when the root certifies nothing, the radius per level and the
+/// summary line.
+void report(const SubspaceBvh& bvh, const Certificates& certificates, bool exclude_rest_contacts, std::ostream& out,
+            std::ostream& progress) {
   const PrecomputeStats& s = certificates.stats();
   progress << "precompute: " << s.threads << " threads, node pairs visited " << s.node_pairs_visited << " (culled "
            << s.node_pairs_culled << "), triangle pairs bounded " << s.triangle_pairs_bounded << " (culled by 1D "
@@ -36,15 +38,56 @@ long run_precompute(const PrecomputeCommandOptions& o, std::ostream& out, std::o
   if (certificates.node_radius(0) == 0.0) {
     progress << "precompute: warning: root radius 0: non-adjacent triangles touch or intersect at rest (or no "
                 "motion is needed to bring them together); the root certifies nothing"
-             << (o.model.exclude_rest_contacts ? "" : " (--exclude-rest-contacts ignores the pairs touching at rest)")
-             << '\n';
+             << (exclude_rest_contacts ? "" : " (--exclude-rest-contacts ignores the pairs touching at rest)") << '\n';
   }
   print_radius_per_level(bvh, certificates, out);
   char line[256];
   std::snprintf(line, sizeof line, "precompute: triangles=%d nodes=%d r=%d time_s=%.3f root_radius=%.6g",
-                model.mesh().triangle_count(), certificates.node_count(), model.mode_count(), s.seconds,
+                bvh.model().mesh().triangle_count(), certificates.node_count(), bvh.model().mode_count(), s.seconds,
                 certificates.node_radius(0));
   out << line << '\n';
+}
+
+}  // namespace
+
+long run_precompute(const PrecomputeCommandOptions& o, std::ostream& out, std::ostream& progress) {
+  const SubspaceModel model = load_model(o.model, progress);
+  const SubspaceBvh bvh(model);
+  progress << "bvh: " << bvh.build_stats().nodes << " nodes, depth " << bvh.build_stats().depth << '\n';
+  if (o.shard_count > 0) {
+    const std::string name = std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count);
+    ProgressBar bar(progress, "precompute shard " + name);
+    const CertificateShard shard =
+        Certificates::precompute_shard(bvh, o.parameters, o.shard_index, o.shard_count, precompute_progress(bar));
+    bar.finish();
+    shard.write(o.output);
+    char line[256];
+    std::snprintf(line, sizeof line, "precompute: shard=%s triangles=%d subtrees=%zu split_depth=%d time_s=%.3f",
+                  name.c_str(), model.mesh().triangle_count(), shard.subtree_roots().size(), shard.split_depth(),
+                  shard.stats().seconds);
+    out << line << '\n';
+    return 0;
+  }
+  ProgressBar bar(progress, "precompute");
+  const Certificates certificates = Certificates::precompute(bvh, o.parameters, precompute_progress(bar));
+  bar.finish();
+  certificates.write(o.output);
+  report(bvh, certificates, o.model.exclude_rest_contacts, out, progress);
+  return 0;
+}
+
+long run_merge(const MergeCommandOptions& o, std::ostream& out, std::ostream& progress) {
+  if (o.shards.empty()) throw std::invalid_argument("merge: no shard files given");
+  const SubspaceModel model = load_model(o.model, progress);
+  const SubspaceBvh bvh(model);
+  progress << "bvh: " << bvh.build_stats().nodes << " nodes, depth " << bvh.build_stats().depth << '\n';
+  std::vector<CertificateShard> shards;
+  for (const std::string& path : o.shards) shards.push_back(CertificateShard::read(path, bvh));
+  ProgressBar bar(progress, "merge");
+  const Certificates certificates = Certificates::merge(bvh, shards, precompute_progress(bar));
+  bar.finish();
+  certificates.write(o.output);
+  report(bvh, certificates, o.model.exclude_rest_contacts, out, progress);
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/ccd/ccd_types.hpp"
 #include "sscc/ccd/kernels.hpp"
+#include "sscc/certificates/certificate_shards.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/certificates/triangle_pair_bound.hpp"
 #include "sscc/geometry/triangle_distance.hpp"

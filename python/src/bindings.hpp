@@ -34,5 +34,6 @@ void bind_models(py::module_& module);
 void bind_queries(py::module_& module);
 void bind_scene(py::module_& module);
 void bind_kernels(py::module_& module);
+void bind_shards(py::module_& module);
 
 }  // namespace sscc::python

@@ -6,6 +6,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "progress.hpp"
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/model/subspace_model.hpp"
@@ -170,14 +171,9 @@ void bind_models(py::module_& m) {
             CertificateParameters parameters;
             parameters.epsilon = epsilon;
             parameters.global_radius_scale = global_radius_scale;
-            // Called between tree levels: the place to let Ctrl-C and the caller's callable in.
-            const PrecomputeProgress report = [&progress](int done, int total) {
-              py::gil_scoped_acquire acquire;
-              if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-              if (!progress.is_none()) progress(done, total);
-            };
-            py::gil_scoped_release release;
-            return Certificates::precompute(bvh, parameters, report);
+            return precompute_with(progress, [&](const PrecomputeProgress& report) {
+              return Certificates::precompute(bvh, parameters, report);
+            });
           },
           py::arg("bvh"), py::arg("epsilon") = CertificateParameters{}.epsilon,
           py::arg("global_radius_scale") = CertificateParameters{}.global_radius_scale,

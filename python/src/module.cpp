@@ -34,4 +34,5 @@ PYBIND11_MODULE(_sscc, module) {
   bind_queries(module);
   bind_scene(module);
   bind_kernels(module);
+  bind_shards(module);
 }

@@ -79,6 +79,7 @@ void bind_queries(py::module_& m) {
                       "GIL and may run from several threads.")
       .def(py::init([](std::shared_ptr<SubspaceBvh> bvh, std::shared_ptr<Certificates> certificates) {
              if (!bvh) throw py::value_error("SelfCcd: bvh is None");
+             py::gil_scoped_release release;
              return std::make_unique<SelfCcd>(std::move(bvh), std::move(certificates));
            }),
            py::arg("bvh"), py::arg("certificates") = py::none(),

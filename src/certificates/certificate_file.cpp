@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "certificates/binary_io.hpp"
 #include "common/fnv1a.hpp"
 #include "sscc/certificates/certificates.hpp"
 
@@ -21,40 +22,8 @@ constexpr char kMagic[8] = {'S', 'S', 'C', 'C', 'C', 'E', 'R', 'T'};
 constexpr std::uint32_t kFormatVersion = 2;
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 
-class Writer {
- public:
-  template <typename T>
-  void put(const T& value) {
-    const auto* p = reinterpret_cast<const char*>(&value);
-    bytes_.insert(bytes_.end(), p, p + sizeof(T));
-  }
-  const std::string& bytes() const { return bytes_; }
-
- private:
-  std::string bytes_;
-};
-
-class Reader {
- public:
-  Reader(const std::string& bytes, const std::string& path) : bytes_(bytes), path_(path) {}
-  template <typename T>
-  T get(const char* what) {
-    if (offset_ + sizeof(T) > bytes_.size()) fail(std::string("truncated (ends inside ") + what + ")");
-    T value;
-    std::memcpy(&value, bytes_.data() + offset_, sizeof(T));
-    offset_ += sizeof(T);
-    return value;
-  }
-  std::size_t offset() const { return offset_; }
-  [[noreturn]] void fail(const std::string& problem) const {
-    throw CertificateFileError("certificate file " + path_ + ": " + problem);
-  }
-
- private:
-  const std::string& bytes_;
-  const std::string& path_;
-  std::size_t offset_ = 0;
-};
+using Reader = detail::ByteReader;
+using Writer = detail::ByteWriter;
 
 }  // namespace
 
@@ -86,7 +55,7 @@ std::uint64_t Certificates::key_of(const SubspaceBvh& bvh, const CertificatePara
   return hash.value();
 }
 
-void Certificates::write(const std::string& path) const {
+std::string Certificates::to_bytes() const {
   Writer w;
   for (char c : kMagic) w.put(c);
   w.put(kFormatVersion);
@@ -105,9 +74,14 @@ void Certificates::write(const std::string& path) const {
   Fnv1a checksum;
   checksum.add(w.bytes().data(), w.bytes().size());
   w.put(checksum.value());
+  return w.bytes();
+}
+
+void Certificates::write(const std::string& path) const {
+  const std::string bytes = to_bytes();
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) throw std::runtime_error("certificate file " + path + ": cannot open for writing");
-  out.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size()));
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   if (!out) throw std::runtime_error("certificate file " + path + ": write failed");
 }
 
@@ -115,7 +89,11 @@ Certificates Certificates::read(const std::string& path, const SubspaceBvh& bvh)
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CertificateFileError("certificate file " + path + ": cannot open");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  Reader r(bytes, path);
+  return from_bytes(bytes, bvh, path);
+}
+
+Certificates Certificates::from_bytes(const std::string& bytes, const SubspaceBvh& bvh, const std::string& source) {
+  Reader r(bytes, "certificate file " + source);
   for (char c : kMagic) {
     if (r.get<char>("magic") != c) r.fail("not a certificate file (bad magic)");
   }

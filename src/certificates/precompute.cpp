@@ -1,13 +1,18 @@
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
 #include "certificates/box_box_bound.hpp"
+#include "certificates/precompute_driver.hpp"
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/certificates/triangle_pair_bound.hpp"
+#include "sscc/common/timing.hpp"
 #include "sscc/threads.hpp"
 
 namespace sscc {
@@ -203,25 +208,97 @@ std::string basis_scale_problem(const SubspaceModel& model) {
   return message.str();
 }
 
-Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters,
-                                      const PrecomputeProgress& progress) {
+namespace detail {
+
+namespace {
+
+/// The units of node n's work items (PrecomputeStatus): a leaf's triangles; for an inner
+/// node, each sibling pair's triangles, (children - 1) times the node's, as the children
+/// partition them.
+long work_units(const SubspaceBvh::Node& node) {
+  const long triangles = node.triangle_end - node.triangle_begin;
+  return node.is_leaf() ? triangles : (node.child_count - 1) * triangles;
+}
+
+/// Reports the progress as work items finish, from any thread, one call at a time. An
+/// exception the callback throws is kept, the remaining items are skipped (stopped()), and
+/// rethrow() passes it on outside the parallel region.
+class ProgressReport {
+ public:
+  ProgressReport(const PrecomputeProgress& progress, int levels, long work) : progress_(progress) {
+    status_.levels = levels;
+    status_.work = work;
+  }
+  bool stopped() const { return stopped_.load(std::memory_order_relaxed); }
+  void work_done(long units) {
+    if (!progress_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    status_.work_done += units;
+    call();
+  }
+  void level_done() {
+    if (!progress_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ++status_.levels_done;
+    call();
+  }
+  void rethrow() const {
+    if (failure_) std::rethrow_exception(failure_);
+  }
+
+ private:
+  void call() {
+    if (failure_) return;
+    try {
+      progress_(status_);
+    } catch (...) {
+      failure_ = std::current_exception();
+      stopped_.store(true, std::memory_order_relaxed);
+    }
+  }
+
+  const PrecomputeProgress& progress_;
+  std::mutex mutex_;
+  PrecomputeStatus status_;
+  std::exception_ptr failure_;
+  std::atomic<bool> stopped_{false};
+};
+
+}  // namespace
+
+PrecomputeState PrecomputeDriver::start(const SubspaceBvh& bvh, const CertificateParameters& parameters) {
   const std::string problem = problem_with(parameters);
   if (!problem.empty()) throw std::invalid_argument("certificates: " + problem);
   const std::string scale_problem = basis_scale_problem(bvh.model());
   if (!scale_problem.empty()) throw std::invalid_argument("certificates: " + scale_problem);
-  const auto start = std::chrono::steady_clock::now();
-  Certificates certificates(bvh, parameters);
-  certificates.global_radius_ = global_radius_of(bvh.model(), parameters.global_radius_scale);
+  PrecomputeState state{Certificates(bvh, parameters), {}};
+  state.certificates.global_radius_ = global_radius_of(bvh.model(), parameters.global_radius_scale);
+  state.contact.assign(bvh.nodes().size(), state.certificates.global_radius_);
+  return state;
+}
+
+void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& selected, PrecomputeState& state,
+                           const PrecomputeProgress& progress) {
+  Certificates& certificates = state.certificates;
+  std::vector<double>& contact = state.contact;
   const double global = certificates.global_radius_;
-  const Precomputation precomputation(bvh, parameters);
   const auto& nodes = bvh.nodes();
+  const std::vector<int> depth = bvh.node_depths();
+  int deepest = -1, shallowest = static_cast<int>(nodes.size());
+  long work = 0;
+  for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
+    if (!selected[n]) continue;
+    deepest = std::max(deepest, depth[n]);
+    shallowest = std::min(shallowest, depth[n]);
+    work += work_units(nodes[n]);
+  }
+  if (deepest < 0) return;
+  const Precomputation precomputation(bvh, certificates.parameters_);
+  ProgressReport report(progress, deepest - shallowest + 1, work);
 
   // Levels, deepest first: a node's radius needs its children's.
-  const std::vector<int> depth = bvh.node_depths();
-  const int levels = *std::max_element(depth.begin(), depth.end()) + 1;
   Counters totals;
-  std::vector<double> contact(nodes.size(), global);  // per node: smallest contact found
-  for (int level = levels - 1; level >= 0; --level) {
+  for (int level = deepest; level >= shallowest; --level) {
     // Work items of the level, largest first: each leaf's own pairs, and each sibling pair
     // of each inner node. A sibling pair is resolved on its own up to kSiblingReach times
     // the smallest radius among its parent's children (and R_global).
@@ -233,7 +310,7 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
     };
     std::vector<Task> tasks;
     for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
-      if (depth[n] != level) continue;
+      if (depth[n] != level || !selected[n]) continue;
       const SubspaceBvh::Node& node = nodes[n];
       if (node.is_leaf()) {
         tasks.push_back({n, -1, -1, node.triangle_end - node.triangle_begin, {global, global}});
@@ -258,20 +335,23 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
       Counters counters;
 #pragma omp for schedule(dynamic, 1)
       for (long i = 0; i < static_cast<long>(tasks.size()); ++i) {
+        if (report.stopped()) continue;
         Task& task = tasks[i];
         if (task.a < 0) {
           precomputation.add_leaf(task.node, task.minimum, counters);
         } else if (box_box_radius(bvh, task.a, task.b) < task.minimum.lower) {
           precomputation.add_node_pair(task.a, task.b, task.minimum, counters);
         }
+        report.work_done(task.size);
       }
 #pragma omp critical
       totals.add(counters);
     }
+    report.rethrow();
     // A node's radius: the minimum over its children and its sibling pairs.
     std::vector<RunningMinimum> minimum(nodes.size(), RunningMinimum{global, global});
     for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
-      if (depth[n] != level) continue;
+      if (depth[n] != level || !selected[n]) continue;
       for (int a = nodes[n].first_child; a < nodes[n].first_child + nodes[n].child_count; ++a) {
         minimum[n].add(certificates.node_radius_[a], contact[a]);
       }
@@ -284,26 +364,49 @@ Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateP
       certificates.sibling_radius_[task.b][task.a - first] = task.minimum.lower;
     }
     for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
-      if (depth[n] != level) continue;
+      if (depth[n] != level || !selected[n]) continue;
       certificates.node_radius_[n] = minimum[n].lower;
       contact[n] = minimum[n].contact;
     }
-    if (progress) progress(levels - level, levels);
+    report.level_done();
+    report.rethrow();
   }
+  PrecomputeStats& stats = certificates.stats_;
+  stats.node_pairs_visited += totals.node_pairs_visited;
+  stats.node_pairs_culled += totals.node_pairs_culled;
+  stats.triangle_pairs_culled += totals.triangle_pairs_culled;
+  stats.triangle_pairs_bounded += totals.triangle_pairs_bounded;
+  stats.constant_mode_evaluations += totals.evaluations;
+}
+
+void PrecomputeDriver::copy_node(const SubspaceBvh& bvh, int n, const Certificates& from, Certificates& to) {
+  to.node_radius_[n] = from.node_radius_[n];
+  const SubspaceBvh::Node& node = bvh.nodes()[n];
+  for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
+    to.sibling_radius_[c] = from.sibling_radius_[c];
+  }
+}
+
+void PrecomputeDriver::finish(PrecomputeState& state, double seconds) {
+  state.certificates.stats_.threads = default_threads();
+  state.certificates.stats_.seconds = seconds;
+}
+
+}  // namespace detail
+
+Certificates Certificates::precompute(const SubspaceBvh& bvh, const CertificateParameters& parameters,
+                                      const PrecomputeProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  detail::PrecomputeState state = detail::PrecomputeDriver::start(bvh, parameters);
+  detail::PrecomputeDriver::run(bvh, std::vector<char>(bvh.nodes().size(), 1), state, progress);
 #ifdef SSCC_MUTANT_INFLATE_RADII
-  for (int n = 1; n < static_cast<int>(nodes.size()); ++n) certificates.node_radius_[n] *= 1.1;
+  Certificates& certificates = state.certificates;
+  for (int n = 1; n < static_cast<int>(bvh.nodes().size()); ++n) certificates.node_radius_[n] *= 1.1;
   for (auto& radii : certificates.sibling_radius_)
     for (double& r : radii) r *= 1.1;
 #endif
-  PrecomputeStats& stats = certificates.stats_;
-  stats.node_pairs_visited = totals.node_pairs_visited;
-  stats.node_pairs_culled = totals.node_pairs_culled;
-  stats.triangle_pairs_culled = totals.triangle_pairs_culled;
-  stats.triangle_pairs_bounded = totals.triangle_pairs_bounded;
-  stats.constant_mode_evaluations = totals.evaluations;
-  stats.threads = default_threads();
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return certificates;
+  detail::PrecomputeDriver::finish(state, seconds_since(start));
+  return std::move(state.certificates);
 }
 
 void Certificates::check_belongs_to(const SubspaceBvh& bvh) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <limits>
@@ -767,6 +768,16 @@ class CullData {
     build_boundaries();
     return cones_pay_ ? boundaries_.get() : nullptr;
   }
+  /// The parts built so far.
+  SelfCcdBuiltParts built() const {
+    SelfCcdBuiltParts parts;
+    parts.cone_boundaries = built_[kBoundaries].load();
+    parts.cone_radii = built_[kPatchRadii].load();
+    parts.unconsidered_leaf_pairs = built_[kUnconsidered].load();
+    parts.certified_radii = built_[kCertifiedRadii].load();
+    parts.displacement_bounds = built_[kDisplacement].load();
+    return parts;
+  }
   /// The fraction of the nodes of at least kSmallestCountedNode triangles whose certificates
   /// hold at norm s (s below their radius); 0 when there are none.
   double certified_fraction(double s) {
@@ -777,6 +788,7 @@ class CullData {
           radii_.push_back(certificates_->node_radius(n));
       }
       std::sort(radii_.begin(), radii_.end());
+      built_[kCertifiedRadii] = true;
     });
     return fraction_above(radii_, s);
   }
@@ -787,6 +799,7 @@ class CullData {
     std::call_once(patch_radii_once_, [&] {
       build_boundaries();
       patch_radii_ = std::make_unique<const PatchRadii>(*bvh_, *boundaries_);
+      built_[kPatchRadii] = true;
     });
     return patch_radii_.get();
   }
@@ -794,14 +807,20 @@ class CullData {
   /// certificates: self_ccd.cpp, SelfCcd::query).
   const DisplacementBounds* displacement(const SelfCcdOptions& options, bool with_certificates) {
     if (!options.use_displacement_bounds || with_certificates) return nullptr;
-    std::call_once(displacement_once_, [&] { displacement_ = std::make_unique<const DisplacementBounds>(*bvh_); });
+    std::call_once(displacement_once_, [&] {
+      displacement_ = std::make_unique<const DisplacementBounds>(*bvh_);
+      built_[kDisplacement] = true;
+    });
     return displacement_.get();
   }
   /// Null when the query does not use the cones (the leaf pairs are skipped with them, so
   /// that the traditional query stays the paper's).
   const UnconsideredLeafPairs* unconsidered_leaf_pairs(const SelfCcdOptions& options) {
     if (!options.use_normal_cones) return nullptr;
-    std::call_once(unconsidered_once_, [&] { unconsidered_ = std::make_unique<const UnconsideredLeafPairs>(*bvh_); });
+    std::call_once(unconsidered_once_, [&] {
+      unconsidered_ = std::make_unique<const UnconsideredLeafPairs>(*bvh_);
+      built_[kUnconsidered] = true;
+    });
     return unconsidered_.get();
   }
   /// The buffers the queries' contexts lend (step_buffers.hpp).
@@ -812,8 +831,11 @@ class CullData {
     std::call_once(boundaries_once_, [&] {
       boundaries_ = std::make_unique<const NodeBoundaries>(*bvh_);
       cones_pay_ = mean_patch_at_rest(*bvh_, *boundaries_) >= kSmallestMeanRestPatch;
+      built_[kBoundaries] = true;
     });
   }
+
+  enum Part { kBoundaries, kPatchRadii, kUnconsidered, kCertifiedRadii, kDisplacement, kPartCount };
 
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
@@ -824,6 +846,7 @@ class CullData {
   std::unique_ptr<const DisplacementBounds> displacement_;
   std::unique_ptr<const PatchRadii> patch_radii_;
   std::unique_ptr<const UnconsideredLeafPairs> unconsidered_;
+  std::atomic<bool> built_[kPartCount] = {};
   StepBufferPool buffers_;
 };
 
@@ -888,9 +911,10 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   // subtrees.
   StepCulls culls;
   culls.displacement = culls_->displacement(options, certificates != nullptr);
-  culls.boundaries = certificates && culls_->certified_fraction(s) > kLargestCertifiedFractionForCones
-                         ? nullptr
-                         : culls_->boundaries(options);
+  culls.boundaries =
+      !options.use_normal_cones || (certificates && culls_->certified_fraction(s) > kLargestCertifiedFractionForCones)
+          ? nullptr
+          : culls_->boundaries(options);
   culls.radii = culls_->radii(options);
   culls.unconsidered = culls_->unconsidered_leaf_pairs(options);
   if (threads > 1) {
@@ -916,8 +940,10 @@ void SelfCcd::prepare(const SelfCcdOptions& options) const {
   culls_->radii(options);
   culls_->displacement(options, certificates != nullptr);
   culls_->unconsidered_leaf_pairs(options);
-  if (certificates) culls_->certified_fraction(0.0);  // query() asks for it with any certificates
+  if (certificates && options.use_normal_cones) culls_->certified_fraction(0.0);  // query() asks for it then
 }
+
+SelfCcdBuiltParts SelfCcd::built_parts() const { return culls_->built(); }
 
 double SelfCcd::step_norm(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1) const {
   const SubspaceModel& model = bvh_->model();

@@ -13,6 +13,7 @@
 #include "demo/scene_run.hpp"
 #include "kernel_validation.hpp"
 #include "plot.hpp"
+#include "progress_bar.hpp"
 
 namespace sscc::validation {
 
@@ -80,7 +81,9 @@ std::vector<EpsilonRow> epsilon_sweep(const SceneRun& run, std::ostream& progres
   for (double epsilon : {0.5, 0.2, 0.1, 0.05, 0.02}) {
     CertificateParameters parameters;
     parameters.epsilon = epsilon;
-    const Certificates certificates = Certificates::precompute(bvh, parameters);
+    ProgressBar bar(progress, "bench: epsilon " + std::to_string(epsilon) + ": certificates");
+    const Certificates certificates = Certificates::precompute(bvh, parameters, precompute_progress(bar));
+    bar.finish();
     const SelfCcd detector(bvh, certificates);
     EpsilonRow row{epsilon, certificates.stats().seconds, certificates.node_radius(0), 0, 0, 0, 0, true};
     long visits = 0;

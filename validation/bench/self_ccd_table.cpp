@@ -10,6 +10,7 @@
 #include "certificate_cache.hpp"
 #include "fcl_self_ccd.hpp"
 #include "model_loading.hpp"
+#include "progress_bar.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/query/self_ccd.hpp"
 #include "statistics.hpp"
@@ -61,8 +62,10 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
       ccd.prepare(each);  // precomputation, as the certificates: not timed
     }
     FclSelfCcd fcl(model.mesh(), model.excluded_pairs());
+    ProgressBar bar(progress, "self-CCD table: " + std::filesystem::path(mesh).stem().string());
+    const double table_steps = static_cast<double>(o.amplitudes.size()) * o.steps;
+    long steps_done = 0;
     for (double amplitude : o.amplitudes) {
-      progress << "self-CCD table: " << mesh << " amplitude " << amplitude << '\n';
       const std::vector<Eigen::VectorXd> q = random_trajectory(model, o.steps, amplitude, o.seed);
       SelfCcdTableRow row;
       row.mesh = std::filesystem::path(mesh).stem().string();
@@ -102,6 +105,7 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
           row.identical = row.identical && reports[m].pairs == reports[kTraditional].pairs &&
                           reports[m].features == reports[kTraditional].features;
         }
+        bar.update(static_cast<double>(++steps_done), table_steps, "amplitude " + format("%g", amplitude));
       }
       const int fcl_steps = std::min(o.fcl_steps, o.steps);
       for (int k = 0; k < fcl_steps; ++k) {
@@ -113,6 +117,7 @@ std::vector<SelfCcdTableRow> self_ccd_table(const SelfCcdTableOptions& o, std::o
       }
       rows.push_back(row);
     }
+    bar.finish();
   }
   return rows;
 }

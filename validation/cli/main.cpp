@@ -10,7 +10,9 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "basis_command.hpp"
@@ -18,9 +20,11 @@
 #include "certificate_sweep.hpp"
 #include "decimate_command.hpp"
 #include "demo/demo_command.hpp"
+#include "kernel_seed_range.hpp"
 #include "kernel_validation.hpp"
 #include "poses_command.hpp"
 #include "precompute_command.hpp"
+#include "scale_command.hpp"
 #include "selfccd_validation.hpp"
 #include "sscc/threads.hpp"
 #include "stress/stress_command.hpp"
@@ -44,12 +48,24 @@ const char* kUsage =
     "            --search-slow N hill-climb N steps per kind for the slowest query\n"
     "            --exponent-range E  coordinates the search makes stay within 2^-E..2^E (default 1074)\n"
     "            --separation-only   with --random: only the minimum-separation sweep, on the same queries\n"
+    "            --seeds A:B     instead: the check against the exact reference of seeds A..B-1, each\n"
+    "                            seed its own queries (--per-seed N random ones of each kind, default\n"
+    "                            1000, and N/10 near-degenerate), so that ranges split a long run:\n"
+    "                            the counts of A:B and B:C add up to those of A:C\n"
     "            --quiet         no progress output\n"
     "  precompute  the certificates of a model, written to a certificate file\n"
     "            --mesh FILE --basis B --weights FILE   the model, as for selfccd\n"
     "            --epsilon E            relative accuracy of the radii (default 0.1)\n"
     "            --global-scale G       radii resolved up to G times the global radius (default 1)\n"
     "            --output FILE.sscc     the certificate file\n"
+    "            --shard I/N            only shard I of N (0 <= I < N): the subtrees below a split\n"
+    "                                   depth dealt to N processes or machines; --output then\n"
+    "                                   names the shard file (FILE.sscc-part), for merge\n"
+    "  merge     the certificate file from the shard files of precompute --shard, byte for byte\n"
+    "            the one precompute writes (the levels above the split depth are computed here)\n"
+    "            --mesh FILE --basis B --weights FILE   the model, as for precompute\n"
+    "            --output FILE.sscc     the certificate file\n"
+    "            SHARD-FILE ...         the N shard files, in any order\n"
     "  certificates  run time against error of the certificates: for each epsilon, precompute,\n"
     "            then SSCC against the traditional query on one trajectory (CSV and plot)\n"
     "            --mesh FILE --basis B --weights FILE   the model\n"
@@ -157,6 +173,14 @@ const char* kUsage =
     "            --seed S               default 1\n"
     "            --load-steps N         steps of the long scene run (default 100000)\n"
     "            --case N               only case N of the table (no long run)\n"
+    "  scale     how the pipeline grows with the mesh: the 27 polynomial modes, hierarchy, default\n"
+    "            certificates and query steps on one mesh, timed, with the process's peak memory;\n"
+    "            the line 'scale: triangles=N ... peak_rss_mb=X' (scripts/scale.sh: a table of sizes)\n"
+    "            --triangles N          a geodesic sphere of about N triangles (default 10000)\n"
+    "            --mesh FILE            a mesh file instead\n"
+    "            --steps N              query steps (default 100)\n"
+    "            --amplitude A          the trajectory's ||q||_M in root radii (default 2)\n"
+    "            --seed S               the trajectory's (default 1)\n"
     "  help      this text\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -239,11 +263,39 @@ int run_report(const Options& options, bool quiet, Report report, const std::str
   return 0;
 }
 
+/// "A:B" with A < B.
+std::pair<std::uint64_t, std::uint64_t> seed_range(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  try {
+    std::size_t used_begin = 0, used_end = 0;
+    const std::uint64_t begin = std::stoull(text.substr(0, colon), &used_begin);
+    const std::uint64_t end = std::stoull(text.substr(colon + 1), &used_end);
+    if (colon == std::string::npos || used_begin != colon || used_end != text.size() - colon - 1 || begin >= end ||
+        text[0] == '-' || text[colon + 1] == '-') {
+      throw std::invalid_argument(text);
+    }
+    return {begin, end};
+  } catch (const std::exception&) {
+    usage_error("--seeds expects A:B with 0 <= A < B, got '" + text + "'");
+  }
+}
+
 int run_kernels(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(args,
                                   {"--queries", "--random", "--seed", "--output", "--repeats", "--search-slow",
-                                   "--exponent-range", "--separation-only"},
+                                   "--exponent-range", "--separation-only", "--seeds", "--per-seed"},
                                   "kernels");
+  if (flags.has("--seeds")) {
+    for (const char* other : {"--queries", "--random", "--seed", "--search-slow", "--separation-only"}) {
+      if (flags.has(other) || flags.on(other)) usage_error(std::string("kernels --seeds does not take ") + other);
+    }
+    sscc::validation::SeedRangeOptions range;
+    std::tie(range.begin, range.end) = seed_range(flags.text("--seeds"));
+    if (flags.has("--per-seed")) range.per_seed = flags.number<long>("--per-seed");
+    if (range.per_seed < 1) usage_error("--per-seed must be positive");
+    return run_report(range, flags.quiet, sscc::validation::run_seed_range, "kernels");
+  }
+  if (flags.has("--per-seed")) usage_error("--per-seed goes with --seeds A:B");
   sscc::validation::KernelValidationOptions options;
   if (flags.has("--queries")) options.queries_dir = flags.text("--queries");
   if (flags.has("--random")) options.random = flags.number<long>("--random");
@@ -281,10 +333,28 @@ sscc::validation::ModelSource model_source(const Flags& flags) {
   return source;
 }
 
+/// "I/N" with 0 <= I < N.
+std::pair<int, int> shard_of(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  try {
+    std::size_t used_index = 0, used_count = 0;
+    const int index = std::stoi(text.substr(0, slash), &used_index);
+    const int count = std::stoi(text.substr(slash + 1), &used_count);
+    if (slash == std::string::npos || used_index != slash || used_count != text.size() - slash - 1 || index < 0 ||
+        index >= count) {
+      throw std::invalid_argument(text);
+    }
+    return {index, count};
+  } catch (const std::exception&) {
+    usage_error("--shard expects I/N with 0 <= I < N, got '" + text + "'");
+  }
+}
+
 int run_precompute(const std::vector<std::string>& args) {
-  const Flags flags = parse_flags(
-      args, {"--mesh", "--basis", "--weights", "--epsilon", "--global-scale", "--output", "--exclude-rest-contacts"},
-      "precompute");
+  const Flags flags = parse_flags(args,
+                                  {"--mesh", "--basis", "--weights", "--epsilon", "--global-scale", "--output",
+                                   "--exclude-rest-contacts", "--shard"},
+                                  "precompute");
   if (!flags.has("--mesh")) usage_error("precompute needs --mesh FILE");
   if (!flags.has("--output")) usage_error("precompute needs --output FILE.sscc");
   sscc::validation::PrecomputeCommandOptions options;
@@ -292,7 +362,30 @@ int run_precompute(const std::vector<std::string>& args) {
   options.output = flags.text("--output");
   if (flags.has("--epsilon")) options.parameters.epsilon = flags.number<double>("--epsilon");
   if (flags.has("--global-scale")) options.parameters.global_radius_scale = flags.number<double>("--global-scale");
+  if (flags.has("--shard")) std::tie(options.shard_index, options.shard_count) = shard_of(flags.text("--shard"));
   return run_report(options, flags.quiet, sscc::validation::run_precompute, "precompute");
+}
+
+int run_merge(const std::vector<std::string>& args) {
+  // The shard files are the arguments that are neither a flag nor a flag's value.
+  std::vector<std::string> flag_args;
+  sscc::validation::MergeCommandOptions options;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i].rfind("--", 0) != 0) {
+      options.shards.push_back(args[i]);
+      continue;
+    }
+    flag_args.push_back(args[i]);
+    if (args[i] != "--quiet" && kSwitches.count(args[i]) == 0 && i + 1 < args.size()) flag_args.push_back(args[++i]);
+  }
+  const Flags flags =
+      parse_flags(flag_args, {"--mesh", "--basis", "--weights", "--output", "--exclude-rest-contacts"}, "merge");
+  if (!flags.has("--mesh")) usage_error("merge needs --mesh FILE");
+  if (!flags.has("--output")) usage_error("merge needs --output FILE.sscc");
+  if (options.shards.empty()) usage_error("merge needs the shard files");
+  options.model = model_source(flags);
+  options.output = flags.text("--output");
+  return run_report(options, flags.quiet, sscc::validation::run_merge, "merge");
 }
 
 std::vector<double> number_list(const std::string& flag, const std::string& list) {
@@ -509,6 +602,18 @@ int run_stress(std::vector<std::string> args) {
   return run_report(options, flags.quiet, sscc::validation::run_stress, "stress");
 }
 
+int run_scale(const std::vector<std::string>& args) {
+  const Flags flags = parse_flags(args, {"--triangles", "--mesh", "--steps", "--amplitude", "--seed"}, "scale");
+  sscc::validation::ScaleOptions options;
+  if (flags.has("--triangles")) options.triangles = flags.number<long>("--triangles");
+  if (flags.has("--mesh")) options.mesh = flags.text("--mesh");
+  if (flags.has("--steps")) options.steps = flags.number<int>("--steps");
+  if (flags.has("--amplitude")) options.amplitude = flags.number<double>("--amplitude");
+  if (flags.has("--seed")) options.seed = flags.number<std::uint64_t>("--seed");
+  if (options.steps <= 0) usage_error("--steps must be positive");
+  return run_report(options, flags.quiet, sscc::validation::run_scale, "scale");
+}
+
 int run_selfccd(const std::vector<std::string>& args) {
   const Flags flags = parse_flags(args,
                                   {"--mesh", "--basis", "--weights", "--steps", "--amplitude", "--burst", "--seed",
@@ -559,6 +664,7 @@ int main(int argc, char** argv) {
     if (command == "kernels") return run_kernels(args);
     if (command == "selfccd") return run_selfccd(args);
     if (command == "precompute") return run_precompute(args);
+    if (command == "merge") return run_merge(args);
     if (command == "certificates") return run_certificate_sweep(args);
     if (command == "basis") return run_basis(args);
     if (command == "decimate") return run_decimate(args);
@@ -566,6 +672,7 @@ int main(int argc, char** argv) {
     if (command == "bench") return run_bench(args);
     if (command == "poses") return run_poses(args);
     if (command == "stress") return run_stress(args);
+    if (command == "scale") return run_scale(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::cout << kUsage;
       return 0;

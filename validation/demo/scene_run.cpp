@@ -9,6 +9,7 @@
 #include "demo/ear_drop.hpp"
 #include "demo/spring_scene.hpp"
 #include "fcl_self_ccd.hpp"
+#include "progress_bar.hpp"
 #include "sscc/scene/scene.hpp"
 #include "sscc/threads.hpp"
 #include "statistics.hpp"
@@ -220,7 +221,7 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
   std::vector<std::vector<ObjectStep>> sampled;  // the steps FCL sees
   std::vector<SceneReport> sampled_reports;
   const int fcl_every = o.fcl_steps > 0 ? std::max(1, run.steps / o.fcl_steps) : 0;
-  const int progress_every = std::max(50, run.steps / 20);
+  ProgressBar bar(progress, "scene " + run.scene);
   std::vector<SelfCcdReport> discrete_a, discrete_b;
   int penetrating_run = 0;
   for (int k = 0; k < run.steps; ++k) {
@@ -275,13 +276,11 @@ SceneRun run_scene(const SceneRunOptions& o, std::ostream& progress) {
       sampled.push_back(steps);
       sampled_reports.push_back(fast);
     }
-    if ((k + 1) % progress_every == 0 || k + 1 == run.steps) {
-      progress << "scene " << run.scene << ": step " << (k + 1) << "/" << run.steps << ", SSCC " << run.sscc.mean()
-               << " ms, traditional " << run.traditional.mean() << " ms per step so far; contacts in "
-               << run.contacts.steps_with_contacts << " steps\n"
-               << std::flush;
-    }
+    bar.update(k + 1, run.steps, "steps");
   }
+  bar.finish(std::to_string(run.steps) + " steps");
+  progress << "scene " << run.scene << ": SSCC " << run.sscc.mean() << " ms, traditional " << run.traditional.mean()
+           << " ms per step; contacts in " << run.contacts.steps_with_contacts << " steps\n";
   run.impacts = motion_source->events();
   for (const Eigen::VectorXd& q : motion_source->configurations()) {
     run.contacts.final_penetrating_pairs += static_cast<int>(detector.query_discrete(q).pairs.size());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "feature_brute_force.hpp"
+#include "progress_bar.hpp"
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/model/polynomial_basis.hpp"
@@ -87,6 +88,7 @@ LoadRunResult run_load(const LoadRunOptions& options, std::ostream& progress) {
   serial.threads = 1;
   result.warm_up_steps = std::max(1L, options.steps / 10);
   std::vector<ObjectStep> steps(kObjects);
+  ProgressBar bar(progress, "load");
   for (long s = 0; s < options.steps; ++s) {
     for (int o = 0; o < kObjects; ++o) {
       steps[o].q0 = q[o];
@@ -105,8 +107,9 @@ LoadRunResult run_load(const LoadRunOptions& options, std::ostream& progress) {
     }
     ++result.steps;
     if (result.steps == result.warm_up_steps) result.rss_warm_kb = resident_kb();
-    if (result.steps % 20000 == 0) progress << "load: " << result.steps << " steps" << std::endl;
+    bar.update(static_cast<double>(result.steps), static_cast<double>(options.steps), "scene steps");
   }
+  bar.finish(std::to_string(result.steps) + " scene steps");
   result.rss_end_kb = resident_kb();
   result.rss_growth_kb = result.rss_end_kb - result.rss_warm_kb;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -14,6 +14,7 @@
 
 #include "feature_brute_force.hpp"
 #include "load_run.hpp"
+#include "progress_bar.hpp"
 #include "sscc/bvh/subspace_bvh.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/query/self_ccd.hpp"
@@ -177,12 +178,20 @@ long run_stress(const StressOptions& options, std::ostream& out, std::ostream& p
   out << "| # | group | case | triangles | r | reference | root radius | steps | colliding | root-certified | seconds "
          "| result |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   const std::vector<StressCase> all = stress_cases();
+  const auto chosen = [&](std::size_t i) {
+    return (!options.quick || all[i].in_quick) && (options.only_case == 0 || options.only_case == long(i) + 1);
+  };
+  long to_run = 0;
+  for (std::size_t i = 0; i < all.size(); ++i) to_run += chosen(i);
+  // By cases: the largest meshes come last and take the longest, so the estimate is low early.
+  ProgressBar bar(progress, "stress");
   for (std::size_t i = 0; i < all.size(); ++i) {
     const StressCase& stress_case = all[i];
-    if (options.quick && !stress_case.in_quick) continue;
-    if (options.only_case != 0 && options.only_case != long(i) + 1) continue;
-    progress << "stress: " << stress_case.group << ", " << stress_case.name << " ..." << std::endl;
+    if (!chosen(i)) continue;
+    bar.update(static_cast<double>(cases), static_cast<double>(to_run),
+               "case " + std::to_string(i + 1) + ": " + stress_case.group + ", " + stress_case.name);
     const CaseResult result = run_case(stress_case, options.quick, options.seed * 1000003 + i);
+    bar.clear();
     ++cases;
     identical += result.outcome == Outcome::kIdentical;
     refused += result.outcome == Outcome::kRefused;

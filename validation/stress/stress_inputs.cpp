@@ -1,6 +1,9 @@
 #include "stress_inputs.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace sscc::validation {
 
@@ -29,6 +32,60 @@ void add_grid_triangles(std::vector<Triangle>& triangles, int n, int first) {
 }
 
 }  // namespace
+
+TriangleMesh geodesic_sphere(int f) {
+  const double g = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Eigen::Vector3d> corners{{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                                       {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  const std::vector<Triangle> faces{{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                    {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  std::vector<Eigen::Vector3d> vertices;
+  for (const Eigen::Vector3d& c : corners) vertices.push_back(c.normalized());
+  // The f - 1 points inside each icosahedron edge (a < b), from a to b.
+  std::map<std::pair<int, int>, int> edge_first;
+  const auto on_edge = [&](int a, int b, int k) {  // k steps of f from a towards b
+    if (k == 0) return a;
+    if (k == f) return b;
+    const int low = std::min(a, b), high = std::max(a, b);
+    auto [it, added] = edge_first.emplace(std::make_pair(low, high), static_cast<int>(vertices.size()));
+    if (added) {
+      for (int i = 1; i < f; ++i)
+        vertices.push_back((corners[low] + (corners[high] - corners[low]) * (double(i) / f)).normalized());
+    }
+    return it->second + (a == low ? k : f - k) - 1;
+  };
+  std::vector<Triangle> triangles;
+  for (const Triangle& face : faces) {
+    const int a = face[0], b = face[1], c = face[2];
+    // Point (i, j) of the face: a + (b - a) i / f + (c - a) j / f, i + j <= f.
+    std::vector<int> index((f + 1) * (f + 1), -1);
+    const auto at = [&](int i, int j) -> int& { return index[j * (f + 1) + i]; };
+    for (int j = 0; j <= f; ++j) {
+      for (int i = 0; i + j <= f; ++i) {
+        if (j == 0) {
+          at(i, j) = on_edge(a, b, i);
+        } else if (i == 0) {
+          at(i, j) = on_edge(a, c, j);
+        } else if (i + j == f) {
+          at(i, j) = on_edge(b, c, j);
+        } else {
+          at(i, j) = static_cast<int>(vertices.size());
+          vertices.push_back(
+              (corners[a] + (corners[b] - corners[a]) * (double(i) / f) + (corners[c] - corners[a]) * (double(j) / f))
+                  .normalized());
+        }
+      }
+    }
+    for (int j = 0; j < f; ++j) {
+      for (int i = 0; i + j < f; ++i) {
+        triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+        if (i + j + 1 < f) triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+  return TriangleMesh(std::move(vertices), std::move(triangles));
+}
 
 TriangleMesh stress_sphere(int rings, int segments) {
   std::vector<Eigen::Vector3d> vertices{{0, 0, 1}};

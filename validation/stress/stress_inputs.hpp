@@ -18,6 +18,11 @@ namespace sscc::validation {
 /// triangles.
 TriangleMesh stress_sphere(int rings, int segments);
 
+/// A geodesic sphere of radius 1 about the origin: each of the icosahedron's 20 faces cut into
+/// f^2 triangles, the vertices pushed out onto the sphere: 20 f^2 nearly equal triangles, no
+/// slivers (unlike stress_sphere's near its poles), outward-facing.
+TriangleMesh geodesic_sphere(int frequency);
+
 /// Two parallel n x n grids of unit size, `gap` apart (z = 0 and z = gap): 4 n^2 triangles.
 TriangleMesh parallel_grids(int n, double gap);
 

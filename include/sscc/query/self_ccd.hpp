@@ -167,6 +167,16 @@ struct SelfCcdStats {
   double seconds = 0.0;
 };
 
+/// Which parts of the culls' static data a detector (with its copies) has built: each is built
+/// by the first query, or prepare(), whose options use it, and never for options that do not.
+struct SelfCcdBuiltParts {
+  bool cone_boundaries = false;          ///< the normal cones' boundary chains (use_normal_cones)
+  bool cone_radii = false;               ///< the patches at rest and their radii (use_normal_cones)
+  bool unconsidered_leaf_pairs = false;  ///< the leaf pairs skipped with the cones (use_normal_cones)
+  bool certified_radii = false;          ///< the certificates' sorted radii (use_normal_cones, certificates)
+  bool displacement_bounds = false;      ///< rest clearances and fits (use_displacement_bounds, no certificates)
+};
+
 struct SelfCcdReport {
   std::vector<TrianglePairContact> pairs;  ///< sorted by (first, second)
   std::vector<FeatureContact> features;    ///< sorted by (kind, first, second)
@@ -206,6 +216,8 @@ class SelfCcd {
   /// takes that much longer (without certificates, two threads: 0.49 s on the 15k-triangle
   /// lion, 3.6 s on the 75k-triangle bunny; the next queries 1.9 and 6.2 ms).
   void prepare(const SelfCcdOptions& options = {}) const;
+  /// What the queries and prepare() have built so far (shared with the detector's copies).
+  SelfCcdBuiltParts built_parts() const;
 
   /// Whether the root's certificate alone decides the step (what query() then reports in
   /// O(r)): false without usable certificates. Throws as query() does for a bad q.
