@@ -22,6 +22,7 @@ py::dict stats_dict(const SelfCcdStats& s) {
   d["certified"] = s.certified;
   d["cone_culled"] = s.cone_culled;
   d["cone_radius_culled"] = s.cone_radius_culled;
+  d["pair_certified"] = s.pair_certified;
   d["plane_culled"] = s.plane_culled;
   d["displacement_culled"] = s.displacement_culled;
   d["root_certified"] = s.root_certified;

@@ -9,6 +9,7 @@
 
 #include "certificates/box_box_bound.hpp"
 #include "certificates/precompute_driver.hpp"
+#include "query/descent.hpp"
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/certificates/triangle_pair_bound.hpp"
@@ -42,20 +43,42 @@ struct RunningMinimum {
 
 struct Counters {
   long node_pairs_visited = 0, node_pairs_culled = 0, triangle_pairs_culled = 0, triangle_pairs_bounded = 0,
-       evaluations = 0;
+       evaluations = 0, pair_certificates = 0;
   void add(const Counters& o) {
     node_pairs_visited += o.node_pairs_visited;
     node_pairs_culled += o.node_pairs_culled;
     triangle_pairs_culled += o.triangle_pairs_culled;
     triangle_pairs_bounded += o.triangle_pairs_bounded;
     evaluations += o.evaluations;
+    pair_certificates += o.pair_certificates;
   }
 };
 
+/// How finely the triangle pairs are resolved: the node radii's accuracy, or the pair
+/// certificates' looser one.
+struct Accuracy {
+  double epsilon;
+  int max_depth;
+  int max_evaluations;
+};
+
+/// Whether the rest boxes of nodes x and y lie within kNearPairMargin of the larger one's
+/// largest half extent of each other.
+bool near_at_rest(const SubspaceBvh& bvh, int x, int y) {
+  const SubspaceBvh::SubspaceBound a = bvh.subspace_bound(x), b = bvh.subspace_bound(y);
+  const double margin = kNearPairMargin * std::max(a.half.maxCoeff(), b.half.maxCoeff());
+  return ((a.centre - b.centre).cwiseAbs() - a.half - b.half).maxCoeff() <= margin;
+}
+
 class Precomputation {
  public:
-  Precomputation(const SubspaceBvh& bvh, const CertificateParameters& parameters)
-      : bvh_(bvh), mesh_(bvh.model().mesh()), parameters_(parameters), triangles_(mesh_.triangle_count()) {
+  /// `global`: R_global, the largest radius kept.
+  Precomputation(const SubspaceBvh& bvh, const CertificateParameters& parameters, double global)
+      : bvh_(bvh),
+        mesh_(bvh.model().mesh()),
+        parameters_(parameters),
+        global_(global),
+        triangles_(mesh_.triangle_count()) {
     const RowMajorMatrix& basis = bvh.model().scaled_basis();
     for (int t = 0; t < mesh_.triangle_count(); ++t) {
       for (int i = 0; i < 3; ++i) {
@@ -69,8 +92,8 @@ class Precomputation {
   /// Folds the considered pairs (neither adjacent nor excluded) among `pairs` into the
   /// running minimum, in order of their 1D bound; pairs whose bound reaches the minimum's
   /// lower bound cannot lower it.
-  void add_triangle_pairs(const std::vector<std::pair<int, int>>& pairs, RunningMinimum& minimum,
-                          Counters& counters) const {
+  void add_triangle_pairs(const std::vector<std::pair<int, int>>& pairs, RunningMinimum& minimum, Counters& counters,
+                          const Accuracy& accuracy) const {
     std::vector<std::pair<double, std::pair<int, int>>> ordered;
     for (const auto& [s, t] : pairs) {
       if (bvh_.model().considers(s, t))
@@ -92,11 +115,11 @@ class Precomputation {
         return;
       }
       TrianglePairRadiusOptions options;
-      options.epsilon = parameters_.epsilon;
+      options.epsilon = accuracy.epsilon;
       options.target = minimum.contact;
       options.ceiling = minimum.lower;
-      options.max_depth = parameters_.max_subdivision_depth;
-      options.max_evaluations = parameters_.max_evaluations_per_pair;
+      options.max_depth = accuracy.max_depth;
+      options.max_evaluations = accuracy.max_evaluations;
       const TrianglePairRadius r = triangle_pair_radius(a, b, options);
       ++counters.triangle_pairs_bounded;
       counters.evaluations += r.evaluations;
@@ -107,20 +130,18 @@ class Precomputation {
   /// Folds the pairs of triangles of two disjoint nodes into the running minimum: children
   /// pairs in order of their box bound.
   void add_node_pair(int a, int b, RunningMinimum& minimum, Counters& counters) const {
+    add_node_pair(a, b, minimum, counters, node_accuracy());
+  }
+
+  void add_node_pair(int a, int b, RunningMinimum& minimum, Counters& counters, const Accuracy& accuracy) const {
     ++counters.node_pairs_visited;
     const SubspaceBvh::Node& na = bvh_.nodes()[a];
     const SubspaceBvh::Node& nb = bvh_.nodes()[b];
     if (na.is_leaf() && nb.is_leaf()) {
-      std::vector<std::pair<int, int>> pairs;
-      const std::vector<int>& order = bvh_.triangle_order();
-      for (int i = na.triangle_begin; i < na.triangle_end; ++i) {
-        for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) pairs.push_back({order[i], order[j]});
-      }
-      add_triangle_pairs(pairs, minimum, counters);
+      add_triangle_pairs(leaf_pair_triangles(na, nb), minimum, counters, accuracy);
       return;
     }
-    const bool split_a =
-        !na.is_leaf() && (nb.is_leaf() || na.triangle_end - na.triangle_begin >= nb.triangle_end - nb.triangle_begin);
+    const bool split_a = detail::splits_first(na, nb);
     const SubspaceBvh::Node& split = split_a ? na : nb;
     const int other = split_a ? b : a;
     std::vector<std::pair<double, int>> children;
@@ -133,8 +154,17 @@ class Precomputation {
         ++counters.node_pairs_culled;
         continue;
       }
-      add_node_pair(c, other, minimum, counters);
+      add_node_pair(c, other, minimum, counters, accuracy);
     }
+  }
+
+  /// The pair certificates below sibling pair (a, b), resolved up to `reach`: entry 0 is the
+  /// pair itself (its radius set by the caller), then the children blocks, depth first.
+  std::vector<PairCertificate> pair_tree(int a, int b, double reach, Counters& counters) const {
+    std::vector<PairCertificate> tree(1);
+    add_pair_children(a, b, reach, tree, 0, counters);
+    counters.pair_certificates += static_cast<long>(tree.size());
+    return tree;
   }
 
   /// Folds a leaf's own non-adjacent pairs into the running minimum.
@@ -145,13 +175,76 @@ class Precomputation {
     for (int i = node.triangle_begin; i < node.triangle_end; ++i) {
       for (int j = i + 1; j < node.triangle_end; ++j) pairs.push_back({order[i], order[j]});
     }
-    add_triangle_pairs(pairs, minimum, counters);
+    add_triangle_pairs(pairs, minimum, counters, node_accuracy());
   }
 
  private:
+  Accuracy node_accuracy() const {
+    return {parameters_.epsilon, parameters_.max_subdivision_depth, parameters_.max_evaluations_per_pair};
+  }
+  Accuracy pair_accuracy() const {
+    return {std::max(parameters_.epsilon, kPairEpsilon), parameters_.max_subdivision_depth,
+            std::min(parameters_.max_evaluations_per_pair, kPairEvaluations)};
+  }
+
+  std::vector<std::pair<int, int>> leaf_pair_triangles(const SubspaceBvh::Node& na, const SubspaceBvh::Node& nb) const {
+    std::vector<std::pair<int, int>> pairs;
+    const std::vector<int>& order = bvh_.triangle_order();
+    for (int i = na.triangle_begin; i < na.triangle_end; ++i) {
+      for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) pairs.push_back({order[i], order[j]});
+    }
+    return pairs;
+  }
+
+  /// Gives entry `self` of `tree`, the pair (x, y), its block of child pairs (the larger node
+  /// split, as the traversal does), and returns the pair's radius resolved up to `reach`:
+  /// near children recursively (their blocks dropped when they reach it), far ones by the
+  /// box bound or the running minimum from `reach`; leaf pairs by their triangle pairs.
+  double add_pair_children(int x, int y, double reach, std::vector<PairCertificate>& tree, std::size_t self,
+                           Counters& counters) const {
+    ++counters.node_pairs_visited;
+    const SubspaceBvh::Node& nx = bvh_.nodes()[x];
+    const SubspaceBvh::Node& ny = bvh_.nodes()[y];
+    const Accuracy accuracy = pair_accuracy();
+    if (nx.is_leaf() && ny.is_leaf()) {
+      RunningMinimum minimum{reach, reach};
+      add_triangle_pairs(leaf_pair_triangles(nx, ny), minimum, counters, accuracy);
+      return minimum.lower;
+    }
+    const bool split_x = detail::splits_first(nx, ny);
+    const SubspaceBvh::Node& split = split_x ? nx : ny;
+    const std::size_t block = tree.size();
+    tree.resize(block + static_cast<std::size_t>(split.child_count));
+    tree[self].first_child = static_cast<std::int32_t>(block);
+    double radius = reach;
+    for (int i = 0; i < split.child_count; ++i) {
+      const int c = split.first_child + i;
+      const int a = split_x ? c : x, b = split_x ? y : c;
+      double child;
+      if (near_at_rest(bvh_, a, b)) {
+        const std::size_t mark = tree.size();
+        child = add_pair_children(a, b, reach, tree, block + static_cast<std::size_t>(i), counters);
+        if (child >= reach) {  // certified up to the reach: its children would never be tested
+          tree.resize(mark);
+          tree[block + static_cast<std::size_t>(i)].first_child = -1;
+        }
+      } else {
+        child = box_box_radius(bvh_, a, b);
+        if (child < reach) {
+          RunningMinimum minimum{reach, reach};
+          add_node_pair(a, b, minimum, counters, accuracy);
+          child = minimum.lower;
+        }
+      }
+      tree[block + static_cast<std::size_t>(i)].radius = std::min(child, global_);
+      radius = std::min(radius, child);
+    }
+    return radius;
+  }
   const SubspaceBvh& bvh_;
   const TriangleMesh& mesh_;
   const CertificateParameters& parameters_;
+  double global_;
   std::vector<ModalTriangle> triangles_;
 };
 
@@ -175,11 +268,32 @@ Certificates::Certificates(const SubspaceBvh& bvh, const CertificateParameters& 
       key_(key_of(bvh, parameters)),
       node_radius_(bvh.nodes().size(), 0.0),
       first_sibling_(bvh.nodes().size(), 0),
-      sibling_radius_(bvh.nodes().size()) {
+      sibling_radius_(bvh.nodes().size()),
+      sibling_tree_(bvh.nodes().size()) {
   for (const SubspaceBvh::Node& node : bvh.nodes()) {
     for (int c = node.first_child; c < node.first_child + node.child_count; ++c) first_sibling_[c] = node.first_child;
   }
   for (auto& radii : sibling_radius_) radii.fill(0.0);
+  for (auto& tree : sibling_tree_) tree.fill(-1);
+}
+
+void Certificates::assemble_pair_certificates(
+    std::vector<std::array<std::vector<PairCertificate>, kBranchingFactor>>& trees) {
+  pairs_.clear();
+  for (std::size_t a = 0; a < trees.size(); ++a) {
+    for (std::size_t position = 0; position < kBranchingFactor; ++position) {
+      std::vector<PairCertificate>& tree = trees[a][position];
+      if (tree.empty()) continue;
+      const auto base = static_cast<std::int32_t>(pairs_.size());
+      const int b = first_sibling_[a] + static_cast<int>(position);
+      sibling_tree_[a][position] = sibling_tree_[b][a - first_sibling_[a]] = base;
+      for (PairCertificate entry : tree) {
+        if (entry.first_child >= 0) entry.first_child += base;
+        pairs_.push_back(entry);
+      }
+      tree = {};
+    }
+  }
 }
 
 std::string problem_with(const CertificateParameters& parameters) {
@@ -188,6 +302,9 @@ std::string problem_with(const CertificateParameters& parameters) {
   }
   if (!std::isfinite(parameters.global_radius_scale) || parameters.global_radius_scale <= 0.0) {
     return "the global radius scale must be positive and finite, got " + std::to_string(parameters.global_radius_scale);
+  }
+  if (!std::isfinite(parameters.pair_reach) || (parameters.pair_reach != 0.0 && parameters.pair_reach < 1.0)) {
+    return "the pair reach must be 0 or at least 1, got " + std::to_string(parameters.pair_reach);
   }
   if (parameters.max_subdivision_depth < 0 || parameters.max_evaluations_per_pair < 1) {
     return "subdivision limits must be non-negative (depth " + std::to_string(parameters.max_subdivision_depth) +
@@ -271,7 +388,8 @@ PrecomputeState PrecomputeDriver::start(const SubspaceBvh& bvh, const Certificat
   if (!problem.empty()) throw std::invalid_argument("certificates: " + problem);
   const std::string scale_problem = basis_scale_problem(bvh.model());
   if (!scale_problem.empty()) throw std::invalid_argument("certificates: " + scale_problem);
-  PrecomputeState state{Certificates(bvh, parameters), {}};
+  PrecomputeState state{Certificates(bvh, parameters), {}, {}};
+  state.trees.resize(bvh.nodes().size());
   state.certificates.global_radius_ = global_radius_of(bvh.model(), parameters.global_radius_scale);
   state.contact.assign(bvh.nodes().size(), state.certificates.global_radius_);
   return state;
@@ -293,7 +411,7 @@ void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& sele
     work += work_units(nodes[n]);
   }
   if (deepest < 0) return;
-  const Precomputation precomputation(bvh, certificates.parameters_);
+  const Precomputation precomputation(bvh, certificates.parameters_, global);
   ProgressReport report(progress, deepest - shallowest + 1, work);
 
   // Levels, deepest first: a node's radius needs its children's.
@@ -307,13 +425,14 @@ void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& sele
       int a = -1, b = -1;  // -1: a leaf's own pairs
       int size = 0;
       RunningMinimum minimum{0.0, 0.0};
+      std::vector<PairCertificate> tree;  // below a sibling pair: its pair certificates
     };
     std::vector<Task> tasks;
     for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
       if (depth[n] != level || !selected[n]) continue;
       const SubspaceBvh::Node& node = nodes[n];
       if (node.is_leaf()) {
-        tasks.push_back({n, -1, -1, node.triangle_end - node.triangle_begin, {global, global}});
+        tasks.push_back({n, -1, -1, node.triangle_end - node.triangle_begin, {global, global}, {}});
         continue;
       }
       double children = global;
@@ -325,7 +444,7 @@ void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& sele
         for (int b = a + 1; b < node.first_child + node.child_count; ++b) {
           const int size =
               nodes[a].triangle_end - nodes[a].triangle_begin + nodes[b].triangle_end - nodes[b].triangle_begin;
-          tasks.push_back({n, a, b, size, {reach, reach}});
+          tasks.push_back({n, a, b, size, {reach, reach}, {}});
         }
       }
     }
@@ -339,8 +458,16 @@ void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& sele
         Task& task = tasks[i];
         if (task.a < 0) {
           precomputation.add_leaf(task.node, task.minimum, counters);
-        } else if (box_box_radius(bvh, task.a, task.b) < task.minimum.lower) {
-          precomputation.add_node_pair(task.a, task.b, task.minimum, counters);
+        } else {
+          if (box_box_radius(bvh, task.a, task.b) < task.minimum.lower) {
+            precomputation.add_node_pair(task.a, task.b, task.minimum, counters);
+          }
+          const double radius = task.minimum.lower;
+          const double tree_reach = std::min(global, certificates.parameters_.pair_reach * radius);
+          if (radius > 0.0 && radius < tree_reach) {
+            task.tree = precomputation.pair_tree(task.a, task.b, tree_reach, counters);
+            task.tree[0].radius = radius;
+          }
         }
         report.work_done(task.size);
       }
@@ -356,12 +483,13 @@ void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& sele
         minimum[n].add(certificates.node_radius_[a], contact[a]);
       }
     }
-    for (const Task& task : tasks) {
+    for (Task& task : tasks) {
       minimum[task.node].add(task.minimum.lower, task.minimum.contact);
       if (task.a < 0) continue;
       const int first = nodes[task.node].first_child;
       certificates.sibling_radius_[task.a][task.b - first] = task.minimum.lower;
       certificates.sibling_radius_[task.b][task.a - first] = task.minimum.lower;
+      state.trees[task.a][task.b - first] = std::move(task.tree);
     }
     for (int n = 0; n < static_cast<int>(nodes.size()); ++n) {
       if (depth[n] != level || !selected[n]) continue;
@@ -379,15 +507,23 @@ void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& sele
   stats.constant_mode_evaluations += totals.evaluations;
 }
 
-void PrecomputeDriver::copy_node(const SubspaceBvh& bvh, int n, const Certificates& from, Certificates& to) {
-  to.node_radius_[n] = from.node_radius_[n];
+void PrecomputeDriver::copy_node(const SubspaceBvh& bvh, int n, const Certificates& from, PrecomputeState& to) {
+  to.certificates.node_radius_[n] = from.node_radius_[n];
   const SubspaceBvh::Node& node = bvh.nodes()[n];
   for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
-    to.sibling_radius_[c] = from.sibling_radius_[c];
+    to.certificates.sibling_radius_[c] = from.sibling_radius_[c];
+    for (int d = c + 1; d < node.first_child + node.child_count; ++d) {
+      to.trees[c][d - node.first_child] = from.pair_tree(bvh, c, d);
+    }
   }
 }
 
 void PrecomputeDriver::finish(PrecomputeState& state, double seconds) {
+  state.certificates.assemble_pair_certificates(state.trees);
+#ifdef SSCC_MUTANT_INFLATE_PAIR_RADII
+  for (PairCertificate& pair : state.certificates.pairs_) pair.radius *= 1.5;
+#endif
+  state.certificates.stats_.pair_certificates = static_cast<long>(state.certificates.pairs_.size());
   state.certificates.stats_.threads = default_threads();
   state.certificates.stats_.seconds = seconds;
 }

@@ -9,6 +9,7 @@
 // threads, the order of the items, or which nodes one run computes.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "sscc/certificates/certificates.hpp"
@@ -21,6 +22,9 @@ namespace sscc::detail {
 struct PrecomputeState {
   Certificates certificates;
   std::vector<double> contact;
+  /// Per node a and position of sibling b > a: the pair certificates below (a, b), until
+  /// finish() lays them out in the certificates.
+  std::vector<std::array<std::vector<PairCertificate>, kBranchingFactor>> trees;
 };
 
 struct PrecomputeDriver {
@@ -33,11 +37,12 @@ struct PrecomputeDriver {
   /// certificates' statistics.
   static void run(const SubspaceBvh& bvh, const std::vector<char>& selected, PrecomputeState& state,
                   const PrecomputeProgress& progress);
-  /// Copies node n's results in the certificates (its radius, and the sibling radii of its
+  /// Copies node n's results (its radius, and the sibling radii and pair certificates of its
   /// children: what its work items compute) from `from` to `to`, both of bvh. Its contact
   /// configuration is the state's, not the certificates'.
-  static void copy_node(const SubspaceBvh& bvh, int n, const Certificates& from, Certificates& to);
-  /// Sets the statistics' thread count and time (seconds since `start`).
+  static void copy_node(const SubspaceBvh& bvh, int n, const Certificates& from, PrecomputeState& to);
+  /// Lays out the pair certificates, sets the statistics' thread count and time (seconds
+  /// since `start`).
   static void finish(PrecomputeState& state, double seconds);
 };
 

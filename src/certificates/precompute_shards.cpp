@@ -154,7 +154,7 @@ Certificates Certificates::merge(const SubspaceBvh& bvh, const std::vector<Certi
   for (const CertificateShard& shard : shards) {
     for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
       if (layout.shard_of[n] == shard.index()) {
-        detail::PrecomputeDriver::copy_node(bvh, n, shard.certificates_, state.certificates);
+        detail::PrecomputeDriver::copy_node(bvh, n, shard.certificates_, state);
       }
     }
     for (std::size_t k = 0; k < shard.roots_.size(); ++k) state.contact[shard.roots_[k]] = shard.contact_[k];

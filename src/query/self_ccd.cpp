@@ -563,7 +563,7 @@ class Traversal {
             detail::TaskFrontier* frontier = nullptr)
       : bvh_(bvh), context_(context), certificates_(certificates), s_(s), frontier_(frontier) {}
 
-  void run(const detail::TraversalTask& task) { task.a == task.b ? intra(task.a) : inter(task.a, task.b); }
+  void run(const detail::TraversalTask& task) { task.a == task.b ? intra(task.a) : inter(task.a, task.b, task.pair); }
 
   void intra(int n) {
     if (context_.stopped()) return;
@@ -592,19 +592,34 @@ class Traversal {
     for (int c = node.first_child; c < node.first_child + node.child_count; ++c) {
       for (int d = c + 1; d < node.first_child + node.child_count; ++d) {
         if (context_.stopped()) return;
-        // Sibling pairs have certificates; the pairs inter() descends to are never siblings.
-        if (certificates_ && s_ < certificates_->sibling_radius(c, d)) {
+        // Sibling pairs have certificates, and pair certificates below them (-1: none).
+        if (!certificates_) {
+          inter(c, d, -1);
+          continue;
+        }
+        if (s_ < certificates_->sibling_radius(c, d)) {
           ++context_.stats().certified;
           continue;
         }
-        inter(c, d);
+        inter(c, d, certificates_->sibling_pair_certificate(c, d));
       }
     }
   }
 
-  void inter(int a, int b) {
+  /// `pair`: the pair certificate of (a, b) (certificates.hpp), -1 when it has none.
+  void inter(int a, int b, int pair) {
     if (context_.stopped()) return;
-    if (frontier_ && frontier_->take(a, b)) return;
+    int children = -1;  // the pair certificates of (a, b)'s child pairs, in descent order
+    if (pair >= 0) {
+      const PairCertificate& certificate = certificates_->pair_certificate(pair);
+      if (s_ < certificate.radius) {
+        ++context_.stats().certified;
+        ++context_.stats().pair_certified;
+        return;
+      }
+      children = certificate.first_child;
+    }
+    if (frontier_ && frontier_->take(a, b, pair)) return;
     if (context_.leaves_hold_no_considered_pair(a, b)) return;
     if (!context_.nodes_overlap(a, b)) return;
     if (context_.nodes_held_apart(a, b)) {
@@ -625,7 +640,7 @@ class Traversal {
           [&](int i, int j) { context_.test_triangle_pair(i, j); });
       return;
     }
-    descend_larger(bvh_, a, bvh_, b, [&](int x, int y) { inter(x, y); });
+    descend_larger(bvh_, a, bvh_, b, [&](int x, int y) { inter(x, y, children < 0 ? -1 : children++); });
   }
 
  private:

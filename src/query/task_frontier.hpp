@@ -23,6 +23,7 @@ inline constexpr int kTasksPerThread = 16;
 /// intra(n) when a == b, inter(a, b) otherwise.
 struct TraversalTask {
   int a, b;
+  int pair = -1;  ///< the pair certificate of (a, b) (certificates.hpp), -1 for none
 };
 
 /// The traversal hands each node pair here before descending into it; a pair small enough
@@ -33,9 +34,9 @@ class TaskFrontier {
       : bvh_(bvh), triangle_limit_(std::max(1, bvh.model().mesh().triangle_count() / (kTasksPerThread * threads))) {}
 
   /// Whether the pair became a task (the traversal then leaves it to the task).
-  bool take(int a, int b) {
+  bool take(int a, int b, int pair = -1) {
     if (!small(a) || !small(b)) return false;
-    tasks_.push_back({a, b});
+    tasks_.push_back({a, b, pair});
     return true;
   }
   const std::vector<TraversalTask>& tasks() const { return tasks_; }
@@ -59,6 +60,7 @@ inline void add_counts(SelfCcdStats& a, const SelfCcdStats& b) {
   a.kernel_calls += b.kernel_calls;
   a.vertices_computed += b.vertices_computed;
   a.certified += b.certified;
+  a.pair_certified += b.pair_certified;
   a.cone_culled += b.cone_culled;
   a.cone_radius_culled += b.cone_radius_culled;
   a.plane_culled += b.plane_culled;

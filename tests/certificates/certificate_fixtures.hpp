@@ -6,6 +6,7 @@
 #include <memory>
 #include <random>
 
+#include "query/descent.hpp"
 #include "sscc/certificates/certificates.hpp"
 #include "sscc/model/polynomial_basis.hpp"
 #include "support/test_meshes.hpp"
@@ -55,6 +56,42 @@ inline std::unique_ptr<CertifiedModel> certified_touching_spheres() {
   const Eigen::MatrixXd basis = polynomial_basis(mesh, 27);
   return std::make_unique<CertifiedModel>(
       SubspaceModel(std::move(mesh), basis, Eigen::VectorXd::Ones(27)).excluding_rest_contacts());
+}
+
+/// A pair certificate with the node pair it certifies.
+struct PairRegion {
+  int x, y;
+  double radius;
+  bool has_children;
+};
+
+/// Every pair certificate below every sibling pair, walked as the traversal descends (the
+/// larger node of each pair split).
+inline std::vector<PairRegion> pair_regions(const SubspaceBvh& bvh, const Certificates& certificates) {
+  std::vector<PairRegion> regions;
+  const auto walk = [&](const auto& self, int k, int x, int y) -> void {
+    const PairCertificate& pair = certificates.pair_certificate(k);
+    regions.push_back({x, y, pair.radius, pair.first_child >= 0});
+    if (pair.first_child < 0) return;
+    const SubspaceBvh::Node& nx = bvh.nodes()[x];
+    const SubspaceBvh::Node& ny = bvh.nodes()[y];
+    const bool split_x = detail::splits_first(nx, ny);
+    const SubspaceBvh::Node& split = split_x ? nx : ny;
+    for (int i = 0; i < split.child_count; ++i) {
+      const int c = split.first_child + i;
+      self(self, pair.first_child + i, split_x ? c : x, split_x ? y : c);
+    }
+  };
+  for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
+    const SubspaceBvh::Node& node = bvh.nodes()[n];
+    for (int a = node.first_child; a < node.first_child + node.child_count; ++a) {
+      for (int b = a + 1; b < node.first_child + node.child_count; ++b) {
+        const int k = certificates.sibling_pair_certificate(a, b);
+        if (k >= 0) walk(walk, k, a, b);
+      }
+    }
+  }
+  return regions;
 }
 
 /// A scaled configuration of norm `norm` in a random direction.

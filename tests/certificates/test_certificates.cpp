@@ -69,7 +69,18 @@ void check_certificates_by_sampling(const CertifiedModel& m, int samples, std::u
       }
     }
   }
+  // The pair certificates below the sibling pairs, likewise.
+  int pairs = 0;
+  for (const sscc::test::PairRegion& region : sscc::test::pair_regions(m.bvh, m.certificates)) {
+    for (const Eigen::VectorXd& q : inside(m.model, region.radius, samples / 2 + 1, rng)) {
+      INFO("pair " << region.x << ", " << region.y << " radius " << region.radius);
+      REQUIRE(intersecting_pairs(m.model, triangles_under(m.bvh, region.x), triangles_under(m.bvh, region.y), false,
+                                 q) == 0);
+      ++pairs;
+    }
+  }
   REQUIRE(checked > 100);
+  REQUIRE(pairs > 100);
 }
 
 }  // namespace
@@ -132,6 +143,7 @@ TEST_CASE("certificates: the culled query reports exactly what the traditional o
   std::mt19937_64 rng(17);
   const double radius = m->certificates.node_radius(0);
   int certified = 0, partly = 0, colliding = 0;
+  long pair_certified = 0;
   for (double norm : {0.5 * radius, 0.9 * radius, 1.5 * radius, 3.0 * radius, 0.4, 0.8, 1.2}) {
     for (int step = 0; step < 4; ++step) {
       const Eigen::VectorXd q0 = sscc::test::random_scaled_coordinates(rng, 27, norm);
@@ -151,6 +163,7 @@ TEST_CASE("certificates: the culled query reports exactly what the traditional o
         certified += a.stats.root_certified;
         partly += !a.stats.root_certified && a.stats.certified > 0;
         colliding += a.collided();
+        pair_certified += a.stats.pair_certified;
         REQUIRE(b.stats.certified == 0);
       }
     }
@@ -158,6 +171,7 @@ TEST_CASE("certificates: the culled query reports exactly what the traditional o
   REQUIRE(certified > 0);
   REQUIRE(partly > 0);
   REQUIRE(colliding > 0);
+  REQUIRE(pair_certified > 0);  // the pair certificates below the sibling pairs took part
 }
 
 TEST_CASE("certificates: sibling radii are looked up by either order, and only for siblings", "[certificates]") {

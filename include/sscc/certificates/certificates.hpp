@@ -19,6 +19,18 @@
 // Radii are not tight: a pair's radius is resolved to within the relative accuracy epsilon
 // where it matters, and every radius is capped at R_global.
 //
+// Below each sibling pair, pair certificates (the SSCC paper certifies siblings only): the
+// node pairs the traversal meets when it descends between the two siblings (each splitting
+// the larger node of its pair, as SelfCcd's traversal does) get radii of their own, R_xy: no
+// triangle under x touches a non-adjacent triangle under y while ||q||_M < R_xy. A step whose
+// norm lies above a sibling pair's radius then still skips most of the pairs below it, where
+// the pair's closest triangles are not. Each is the minimum over the pair's children, down to
+// its leaves' triangle pairs, with the same conservative bounds as the radii above (with the
+// looser accuracy kPairEpsilon), resolved up to pair_reach times the sibling pair's radius:
+// the pair's children are stored where they are near at rest (their rest boxes within
+// kNearPairMargin of each other) and their radius is below that reach; a child stored without
+// children of its own holds a radius the traversal tests, then descends uncertified below it.
+//
 // Units: radii are norms of the scaled coordinates, ||q_hat||_2 = ||q||_M.
 #pragma once
 
@@ -44,10 +56,35 @@ struct CertificateParameters {
   /// Limits of the refinement of one triangle pair (past them the bound reached is kept).
   int max_subdivision_depth = 16;
   int max_evaluations_per_pair = 2048;
+  /// Pair certificates below each sibling pair are resolved up to this multiple of its
+  /// radius (and R_global); 0: none. Larger: steps further past the sibling radii keep
+  /// certificates below them, for a longer precomputation and a larger file.
+  double pair_reach = 4.0;
 };
 
+/// A node pair below a sibling pair: the radius below which no considered triangle pair across
+/// it touches (at most R_global), and the index of its first child pair's certificate (its
+/// children, in the traversal's order, are consecutive), or -1 when none are stored.
+struct PairCertificate {
+  double radius = 0.0;
+  std::int32_t first_child = -1;
+};
+
+/// Rest boxes of two nodes within this fraction of the larger node's largest rest half extent
+/// make a near pair, whose children get pair certificates of their own; farther pairs get one
+/// radius, and the traversal descends below it uncertified. Larger: more pairs stored and
+/// resolved; smaller: fewer pairs certified below the near ones.
+inline constexpr double kNearPairMargin = 0.5;
+/// Relative accuracy (and most constant-mode evaluations) of the triangle-pair bounds of the
+/// pair certificates, looser than the node radii's (CertificateParameters::epsilon is used when
+/// larger): the pairs below a sibling pair are many, and a radius within 30% decides most
+/// steps. Smaller: a longer precomputation for slightly larger radii.
+inline constexpr double kPairEpsilon = 0.3;
+inline constexpr int kPairEvaluations = 64;
+
 /// What is wrong with `parameters` ("" when they are valid): epsilon in (0, 1), a positive
-/// finite global radius scale, a non-negative depth and at least one evaluation per pair.
+/// finite global radius scale, a non-negative depth, at least one evaluation per pair and a
+/// finite pair reach of 0 or at least 1.
 /// precompute() refuses invalid parameters, read() refuses files that hold them.
 std::string problem_with(const CertificateParameters& parameters);
 
@@ -74,6 +111,7 @@ struct PrecomputeStats {
   long triangle_pairs_culled = 0;   ///< by the 1D bound
   long triangle_pairs_bounded = 0;  ///< triangle_pair_radius calls
   long constant_mode_evaluations = 0;
+  long pair_certificates = 0;  ///< stored below the sibling pairs
   int threads = 1;
   double seconds = 0.0;
 };
@@ -136,6 +174,11 @@ class Certificates {
     return first_sibling_[a] == first_sibling_[b] && a != b ? sibling_radius_[a][b - first_sibling_[b]] : 0.0;
   }
   int node_count() const { return static_cast<int>(node_radius_.size()); }
+  /// The index of the pair certificate of sibling pair (a, b) (a != b, children of one node),
+  /// whose children certify the pairs below it; -1 when none.
+  int sibling_pair_certificate(int a, int b) const { return sibling_tree_[a][b - first_sibling_[b]]; }
+  const PairCertificate& pair_certificate(int k) const { return pairs_[k]; }
+  const std::vector<PairCertificate>& pair_certificates() const { return pairs_; }
   const CertificateParameters& parameters() const { return parameters_; }
   std::uint64_t key() const { return key_; }
   /// Statistics of the precomputation (zero for certificates read from a file; after merge(),
@@ -153,6 +196,16 @@ class Certificates {
   /// in errors).
   std::string to_bytes() const;
   static Certificates from_bytes(const std::string& bytes, const SubspaceBvh& bvh, const std::string& source);
+  /// What is wrong with the pair certificates' structure for bvh ("" when nothing): indices
+  /// out of range or not increasing, children blocks of the wrong size, radii not in
+  /// [0, R_global]. read() refuses files that have such a problem.
+  std::string pair_certificate_problem(const SubspaceBvh& bvh) const;
+  /// Lays the pair certificates of every sibling pair (by its first node and the position of
+  /// the second) out in one array, in node order, and points the sibling pairs at them.
+  void assemble_pair_certificates(std::vector<std::array<std::vector<PairCertificate>, kBranchingFactor>>& trees);
+  /// The pair certificates below sibling pair (a, b) (a < b), laid out as the precomputation
+  /// built them (entry 0 the pair itself, indices relative); empty when none.
+  std::vector<PairCertificate> pair_tree(const SubspaceBvh& bvh, int a, int b) const;
 
   // Each node's results (what a shard carries for its nodes) are listed in
   // detail::PrecomputeDriver::copy_node (precompute.cpp).
@@ -162,6 +215,8 @@ class Certificates {
   std::vector<double> node_radius_;
   std::vector<int> first_sibling_;                                    // the first child of the node's parent
   std::vector<std::array<double, kBranchingFactor>> sibling_radius_;  // by the sibling's position
+  std::vector<std::array<int, kBranchingFactor>> sibling_tree_;       // likewise: the pair certificate's index
+  std::vector<PairCertificate> pairs_;
   PrecomputeStats stats_;
 };
 

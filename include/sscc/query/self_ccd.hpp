@@ -158,7 +158,8 @@ struct SelfCcdStats {
   long triangle_pairs = 0;  ///< non-adjacent pairs whose boxes over the step may meet
   long kernel_calls = 0;
   long vertices_computed = 0;
-  long certified = 0;            ///< nodes and sibling pairs culled by a certificate
+  long certified = 0;            ///< nodes, sibling pairs and node pairs below them culled by a certificate
+  long pair_certified = 0;       ///< of those, node pairs below sibling pairs (pair certificates)
   long cone_culled = 0;          ///< nodes and node pairs culled by the normal-cone test
   long cone_radius_culled = 0;   ///< of those, culled from the step's norm alone (patch radii)
   long plane_culled = 0;         ///< of triangle_pairs, culled by a separating plane (normal cones' queries)
