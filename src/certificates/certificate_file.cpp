@@ -75,7 +75,7 @@ std::string Certificates::pair_certificate_problem(const SubspaceBvh& bvh) const
       return;
     }
     const PairCertificate& pair = pairs_[static_cast<std::size_t>(k)];
-    if (!(pair.radius >= 0.0) || pair.radius > global_radius_) {
+    if (std::isnan(pair.radius) || pair.radius < 0.0 || pair.radius > global_radius_) {
       problem = "radius of pair certificate " + std::to_string(k);
       return;
     }

@@ -3,10 +3,12 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 
 #include "certificate_fixtures.hpp"
+#include "common/fnv1a.hpp"
 
 namespace {
 
@@ -134,5 +136,56 @@ TEST_CASE("certificate file: parameters that precompute() refuses are refused on
     CHECK_THROWS_AS(sscc::Certificates::precompute(m->bvh, p), std::invalid_argument);
     write_bytes(path, with_parameters(bytes, m->bvh, p));
     CHECK_THAT(error_of(path, m->bvh), Catch::Contains("invalid parameters"));
+  }
+}
+
+namespace {
+
+/// The file's bytes with the pair certificates' section changed by `damage`, then checksummed
+/// again: only the structure checks can refuse it.
+std::string with_pair_section(std::string bytes, int nodes, const std::function<void(char*, std::int64_t)>& damage) {
+  // magic, version, byte-order mark, key, parameters, node count, R_global, node radii,
+  // sibling radii, sibling pair certificate indices, pair count.
+  const std::size_t at = 8 + 4 + 4 + 8 + (8 + 8 + 4 + 4 + 8) + 8 + 8 + 8 * static_cast<std::size_t>(nodes) +
+                         (32 + 16) * static_cast<std::size_t>(nodes);
+  std::int64_t count;
+  std::memcpy(&count, bytes.data() + at, sizeof count);
+  damage(bytes.data() + at + sizeof count, count);
+  sscc::Fnv1a checksum;
+  checksum.add(bytes.data(), bytes.size() - sizeof(std::uint64_t));
+  const std::uint64_t value = checksum.value();
+  std::memcpy(bytes.data() + bytes.size() - sizeof value, &value, sizeof value);
+  return bytes;
+}
+
+}  // namespace
+
+TEST_CASE("certificate file: pair certificates of a broken structure are refused, checksum or not", "[certificates]") {
+  const auto m = sscc::test::certified_sphere();
+  const sscc::Certificates& c = m->certificates;
+  REQUIRE(c.pair_certificates().size() > 10);
+  const std::string path = temporary_path("sphere-pairs.sscc");
+  c.write(path);
+  const std::string bytes = read_bytes(path);
+  const int nodes = c.node_count();
+  write_bytes(path, with_pair_section(bytes, nodes, [](char*, std::int64_t) {}));
+  REQUIRE(error_of(path, m->bvh).empty());
+  std::int64_t parent = -1;  // a pair certificate with children
+  for (std::size_t k = 0; k < c.pair_certificates().size() && parent < 0; ++k) {
+    if (c.pair_certificate(static_cast<int>(k)).first_child >= 0) parent = static_cast<std::int64_t>(k);
+  }
+  REQUIRE(parent >= 0);
+  const auto entry = [&](char* pairs, std::int64_t k) { return pairs + 12 * k; };
+  const auto refused = [&](const std::function<void(char*, std::int64_t)>& damage) {
+    write_bytes(path, with_pair_section(bytes, nodes, damage));
+    return error_of(path, m->bvh).find("pair certificate") != std::string::npos;
+  };
+  for (std::int32_t child : {std::int32_t(1 << 30), std::int32_t(0), static_cast<std::int32_t>(parent)}) {
+    INFO("first child " << child);
+    CHECK(refused([&](char* pairs, std::int64_t) { std::memcpy(entry(pairs, parent) + 8, &child, sizeof child); }));
+  }
+  for (double radius : {-1.0, std::numeric_limits<double>::quiet_NaN(), 2.0 * c.global_radius()}) {
+    INFO("radius " << radius);
+    CHECK(refused([&](char* pairs, std::int64_t) { std::memcpy(entry(pairs, parent), &radius, sizeof radius); }));
   }
 }
