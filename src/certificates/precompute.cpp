@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "certificates/box_box_bound.hpp"
+#include "certificates/near_pair.hpp"
 #include "certificates/precompute_driver.hpp"
 #include "query/descent.hpp"
 #include "sscc/ccd/kernels.hpp"
@@ -61,14 +62,6 @@ struct Accuracy {
   int max_depth;
   int max_evaluations;
 };
-
-/// Whether the rest boxes of nodes x and y lie within kNearPairMargin of the larger one's
-/// largest half extent of each other.
-bool near_at_rest(const SubspaceBvh& bvh, int x, int y) {
-  const SubspaceBvh::SubspaceBound a = bvh.subspace_bound(x), b = bvh.subspace_bound(y);
-  const double margin = kNearPairMargin * std::max(a.half.maxCoeff(), b.half.maxCoeff());
-  return ((a.centre - b.centre).cwiseAbs() - a.half - b.half).maxCoeff() <= margin;
-}
 
 class Precomputation {
  public:
@@ -221,7 +214,7 @@ class Precomputation {
       const int c = split.first_child + i;
       const int a = split_x ? c : x, b = split_x ? y : c;
       double child;
-      if (near_at_rest(bvh_, a, b)) {
+      if (detail::near_at_rest(bvh_, a, b)) {
         const std::size_t mark = tree.size();
         child = add_pair_children(a, b, reach, tree, block + static_cast<std::size_t>(i), counters);
         if (child >= reach) {  // certified up to the reach: its children would never be tested

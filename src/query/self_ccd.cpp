@@ -27,6 +27,7 @@
 #include "query/step_buffers.hpp"
 #include "query/sweep.hpp"
 #include "query/task_frontier.hpp"
+#include "query/uncertified_work.hpp"
 #include "query/unconsidered_leaf_pairs.hpp"
 #include "sscc/ccd/kernels.hpp"
 
@@ -53,6 +54,17 @@ using detail::sweeps_may_touch;
 /// 19.1 ms with certificates against 18.0 without, before this rule; 17.3 against 17.5 with
 /// it).
 constexpr double kFarPastCertificateRatio = 2.0;
+
+/// Past kFarPastCertificateRatio, a step is still taken lazily (vertices and sweeps on demand,
+/// one thread) while the certificates' open ends it fails weigh at most this fraction of the
+/// triangle count (uncertified_work.hpp): the pair certificates below the sibling pairs then
+/// still cull nearly all of the hierarchy. Measured, one thread, traversed steps: the dragon
+/// scene's (every one past the ratio, estimates at most 0.05), 0.68 ms per step computing every
+/// vertex against 0.044 ms lazily (same culls, 5441 vertices against 357); the hard spring's
+/// (estimates at most 0.15) 0.322 against 0.320 ms. A step that fails every certificate
+/// estimates at least 1 (every leaf). Lower: lazy steps that reach most vertices anyway;
+/// higher: every vertex computed for a step that reaches few.
+constexpr double kLargestUncertifiedWorkForLazySteps = 0.5;
 
 /// With certificates, a step whose norm leaves more than this fraction of the nodes of at
 /// least kSmallestCountedNode triangles (displacement_bound.hpp) certified (s below their
@@ -807,6 +819,12 @@ class CullData {
     });
     return fraction_above(radii_, s);
   }
+  /// The certificates' estimate of the traversal's uncertified work at norm s, over the
+  /// triangle count (uncertified_work.hpp).
+  double uncertified_work(double s) {
+    std::call_once(work_once_, [&] { work_ = std::make_unique<const UncertifiedWork>(*bvh_, *certificates_); });
+    return work_->fraction(s);
+  }
   /// Null when the query does not use the cones. Built on any mesh: they cost O(1) per node
   /// per query, so kSmallestMeanRestPatch does not apply.
   const PatchRadii* radii(const SelfCcdOptions& options) {
@@ -854,13 +872,14 @@ class CullData {
 
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
-  std::once_flag boundaries_once_, displacement_once_, radii_once_, patch_radii_once_, unconsidered_once_;
+  std::once_flag boundaries_once_, displacement_once_, radii_once_, patch_radii_once_, unconsidered_once_, work_once_;
   std::vector<double> radii_;  // sorted
   std::unique_ptr<const NodeBoundaries> boundaries_;
   bool cones_pay_ = false;
   std::unique_ptr<const DisplacementBounds> displacement_;
   std::unique_ptr<const PatchRadii> patch_radii_;
   std::unique_ptr<const UnconsideredLeafPairs> unconsidered_;
+  std::unique_ptr<const UncertifiedWork> work_;
   std::atomic<bool> built_[kPartCount] = {};
   StepBufferPool buffers_;
 };
@@ -916,7 +935,8 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   // the root's radius, certificates cull most of what the threads would share, while each
   // extra thread builds its own per-query state: one thread (measured on the audio-rate
   // spring, mean SSCC step 0.354 ms on 2 threads against 0.085 ms on one before this rule).
-  const bool far_past = far_past_root(certificates, s);
+  const bool far_past = far_past_root(certificates, s) &&
+                        (!certificates || culls_->uncertified_work(s) > kLargestUncertifiedWorkForLazySteps);
   const int threads = far_past ? detail::resolve_threads(options.threads) : 1;
   // The displacement cull only without certificates: with them it culls what they cull, a
   // little later, at O(r) per node (measured on the default demo's traversed steps, 2.13 ms
@@ -956,6 +976,7 @@ void SelfCcd::prepare(const SelfCcdOptions& options) const {
   culls_->displacement(options, certificates != nullptr);
   culls_->unconsidered_leaf_pairs(options);
   if (certificates && options.use_normal_cones) culls_->certified_fraction(0.0);  // query() asks for it then
+  if (certificates) culls_->uncertified_work(0.0);
 }
 
 SelfCcdBuiltParts SelfCcd::built_parts() const { return culls_->built(); }
