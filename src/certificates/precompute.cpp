@@ -71,7 +71,8 @@ class Precomputation {
         mesh_(bvh.model().mesh()),
         parameters_(parameters),
         global_(global),
-        triangles_(mesh_.triangle_count()) {
+        triangles_(mesh_.triangle_count()),
+        summaries_(mesh_.triangle_count()) {
     const RowMajorMatrix& basis = bvh.model().scaled_basis();
     for (int t = 0; t < mesh_.triangle_count(); ++t) {
       for (int i = 0; i < 3; ++i) {
@@ -79,19 +80,30 @@ class Precomputation {
         triangles_[t].rest[i] = mesh_.vertices()[v];
         triangles_[t].modes[i] = basis.middleRows<3>(3 * v);
       }
+      summaries_[t] = summarize(triangles_[t]);
     }
   }
 
   /// Folds the considered pairs (neither adjacent nor excluded) among `pairs` into the
   /// running minimum, in order of their 1D bound; pairs whose bound reaches the minimum's
-  /// lower bound cannot lower it.
+  /// lower bound cannot lower it. The minimum's lower bound only falls, so a pair whose 1D
+  /// bound (or its floor) reaches it on entry would be cut there after sorting: it is cut
+  /// before sorting, and the pairs bounded, their order and the minimum stay the same.
   void add_triangle_pairs(const std::vector<std::pair<int, int>>& pairs, RunningMinimum& minimum, Counters& counters,
                           const Accuracy& accuracy) const {
     std::vector<std::pair<double, std::pair<int, int>>> ordered;
+    long culled = 0;
     for (const auto& [s, t] : pairs) {
-      if (bvh_.model().considers(s, t))
-        ordered.push_back({one_dimensional_radius(triangles_[s], triangles_[t]), {s, t}});
+      if (!bvh_.model().considers(s, t)) continue;
+      const double estimate =
+          one_dimensional_radius(triangles_[s], triangles_[t], summaries_[s], summaries_[t], minimum.lower);
+      if (estimate >= minimum.lower) {
+        ++culled;
+        continue;
+      }
+      ordered.push_back({estimate, {s, t}});
     }
+    counters.triangle_pairs_culled += culled;
     std::sort(ordered.begin(), ordered.end());
     for (std::size_t i = 0; i < ordered.size(); ++i) {
       const auto& [estimate, pair] = ordered[i];
@@ -239,6 +251,7 @@ class Precomputation {
   const CertificateParameters& parameters_;
   double global_;
   std::vector<ModalTriangle> triangles_;
+  std::vector<TriangleSummary> summaries_;
 };
 
 /// The norm at which the floppiest mode moves some vertex by half the bounding-box

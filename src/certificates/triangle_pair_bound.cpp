@@ -51,19 +51,17 @@ struct PositionRounding {
   double per_norm = 0.0;
 };
 
-PositionRounding rounding_of_positions(const ModalTriangle& a, const ModalTriangle& b) {
+PositionRounding rounding_of_positions(const TriangleSummary& a, const TriangleSummary& b, Eigen::Index modes) {
 #ifdef SSCC_MUTANT_NO_POSITION_ROUNDING
   return {};
 #endif
-  const double c = (static_cast<double>(a.modes[0].cols()) + 2.0) * std::numeric_limits<double>::epsilon();
-  double coordinate = 0.0, row = 0.0;
-  for (const ModalTriangle* t : {&a, &b}) {
-    for (int i = 0; i < 3; ++i) {
-      coordinate = std::max(coordinate, t->rest[i].cwiseAbs().maxCoeff());
-      row = std::max(row, t->modes[i].rowwise().norm().maxCoeff());
-    }
-  }
-  return {c * coordinate, c * row};
+  const double c = (static_cast<double>(modes) + 2.0) * std::numeric_limits<double>::epsilon();
+  return {c * std::max(a.largest_coordinate, b.largest_coordinate),
+          c * std::max(a.largest_row_norm, b.largest_row_norm)};
+}
+
+PositionRounding rounding_of_positions(const ModalTriangle& a, const ModalTriangle& b) {
+  return rounding_of_positions(summarize(a), summarize(b), a.modes[0].cols());
 }
 
 /// The two triangles of a pair, reduced to what the bounds need: the six rest vertices and
@@ -106,11 +104,22 @@ class PairFrame {
     return f;
   }
 
-  /// An upper bound of ||(sum_i c_i U_i)^T u||^2 from the projected forms F of unit u.
-  double projected_norm_squared_upper(const Eigen::Matrix<double, 6, 6>& f, const Weights6& c) const {
+  /// The pads of projected_norm_squared_upper for combination c, which do not depend on the
+  /// direction: computed once for the directions a piece pair is tried in.
+  struct ProjectionPads {
+    double rounding;
+    double eigenvalue;
+  };
+  ProjectionPads projection_pads(const Weights6& c) const {
     const double spread = c.cwiseAbs().sum();
-    return std::max(0.0, c.dot(f * c)) + rounding_ * spread * spread +
-           kEigenvaluePad * std::max(0.0, c.dot(traces_ * c)) + std::numeric_limits<double>::min();
+    return {rounding_ * spread * spread, kEigenvaluePad * std::max(0.0, c.dot(traces_ * c))};
+  }
+
+  /// An upper bound of ||(sum_i c_i U_i)^T u||^2 from the projected forms F of unit u, with
+  /// c's pads.
+  static double projected_norm_squared_upper(const Eigen::Matrix<double, 6, 6>& f, const Weights6& c,
+                                             const ProjectionPads& pads) {
+    return std::max(0.0, c.dot(f * c)) + pads.rounding + pads.eigenvalue + std::numeric_limits<double>::min();
   }
 
   /// Gram matrix of the combination sum_i c_i U_i, and the pad covering its rounding.
@@ -161,6 +170,21 @@ struct Evaluation {
 /// The rest positions of a piece's three vertices.
 using Corners = std::array<Eigen::Vector3d, 3>;
 
+/// The nine vertex pairs (j, k) of two pieces, at 3 j + k: the combination xb - xa of the
+/// frame's vertices that moves them apart, and its pads (the same for every direction).
+struct VertexPairCombinations {
+  std::array<Weights6, 9> weights;
+  std::array<PairFrame::ProjectionPads, 9> pads;
+  VertexPairCombinations(const PairFrame& frame, const Piece& pa, const Piece& pb) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) {
+        weights[3 * j + k] = on_second(pb.row(k).transpose()) - on_first(pa.row(j).transpose());
+        pads[3 * j + k] = frame.projection_pads(weights[3 * j + k]);
+      }
+    }
+  }
+};
+
 /// The dual bound: for any v, a contact q_hat of points Xa, Xb satisfies
 ///   v^T (Xa - Xb) = v^T (U(Xb) - U(Xa)) q_hat <= ||(U(Xb) - U(Xa))^T v|| ||q_hat||.
 /// Over the two pieces the ratio N / D, N = v^T (Xa - Xb) linear and D = ||(U(Xb) - U(Xa))^T v||
@@ -171,23 +195,23 @@ using Corners = std::array<Eigen::Vector3d, 3>;
 /// d_c, the constant-mode optimum's multiplier, it is never weaker than the paper's
 /// perturbation bound (eq. 10): the numerator is at least R_c^2 and the denominator at most
 /// R_c + |dU| ||v||, with ||v|| <= R_c / sigma_min(A).
-double dual_bound(const PairFrame& frame, const Piece& pa, const Piece& pb, const Corners& corners_a,
-                  const Corners& corners_b, const Eigen::Vector3d& v) {
+double dual_bound(const PairFrame& frame, const Corners& corners_a, const Corners& corners_b,
+                  const VertexPairCombinations& combinations, const Eigen::Vector3d& v) {
   const double length = v.stableNorm();
   if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
   const Eigen::Vector3d unit = v / length;
   const Eigen::Matrix<double, 6, 6> forms = frame.projected(unit);
   double bound = INFINITY;
   for (int j = 0; j < 3; ++j) {
-    const Weights6 xa = on_first(pa.row(j).transpose());
     const Eigen::Vector3d& a_point = corners_a[j];
     for (int k = 0; k < 3; ++k) {
-      const Weights6 xb = on_second(pb.row(k).transpose());
       const Eigen::Vector3d& b_point = corners_b[k];
       const double numerator =
           unit.dot(a_point - b_point) - kDistanceAllowance * frame.extent() - 2.0 * frame.position_rounding().absolute;
       if (!(numerator > 0.0)) return 0.0;
-      bound = std::min(bound, numerator / (std::sqrt(frame.projected_norm_squared_upper(forms, xb - xa)) +
+      const int i = 3 * j + k;
+      bound = std::min(bound, numerator / (std::sqrt(PairFrame::projected_norm_squared_upper(
+                                               forms, combinations.weights[i], combinations.pads[i])) +
                                            2.0 * frame.position_rounding().per_norm));
     }
   }
@@ -230,7 +254,8 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   const Eigen::Vector3d constant_mode_multiplier =
       solver.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() * solver.eigenvectors().transpose() * d;
   Evaluation e;
-  e.lower = dual_bound(frame, pa, pb, corners_a, corners_b, constant_mode_multiplier);
+  const VertexPairCombinations combinations(frame, pa, pb);
+  e.lower = dual_bound(frame, corners_a, corners_b, combinations, constant_mode_multiplier);
 #ifdef SSCC_MUTANT_NO_CONSTANT_MODE_MULTIPLIER
   e.lower = 0.0;
 #endif
@@ -252,8 +277,8 @@ Evaluation evaluate(const PairFrame& frame, const Piece& pa, const Piece& pb) {
   }
   e.upper = std::sqrt(e.upper);
   if (std::isfinite(e.upper)) {
-    e.lower =
-        std::max(e.lower, dual_bound(frame, pa, pb, corners_a, corners_b, true_modes.eigenvectors() * inverse_along));
+    e.lower = std::max(
+        e.lower, dual_bound(frame, corners_a, corners_b, combinations, true_modes.eigenvectors() * inverse_along));
   }
   return e;
 }
@@ -331,33 +356,129 @@ TrianglePairRadius triangle_pair_radius(const ModalTriangle& a, const ModalTrian
   }
 }
 
-double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
+namespace {
+
+// The floor of the 1D bound replaces vertex pair (j, k)'s computed rate sqrt(sum_c d_c^2),
+// d_c = |along_b - along_a| (1 + u) + slack_a + slack_b, by
+//   growth (||n^T (M_b - M_a)|| + sqrt(n^T S_b,k n + pad_b,k) + sqrt(n^T S_a,j n + pad_a,j))
+//     + allowance (block_a + block_b).
+// Exactly, U_b,k - U_a,j = (M_b - M_a) + D_b,k - D_a,j with D = U - M for any M (the means
+// as computed), and ||n^T D_k||^2 = n^T S_k n with S_k = D_k D_k^T. The computed
+// projections err by gamma_3 |n|.|column| each and the slacks add 4u |n|.|column|: in the
+// 2-norm over columns at most 8u (||U_a,j||_F + ||U_b,k||_F), far below the allowance; the
+// same holds for the projected means and for the rounding of D itself (u |D| per entry,
+// |D| below twice the largest block). Each entry of S_k is an r-term sum, rounded by at most
+// gamma_r trace(S_k): pad = kSpreadPad trace(S_k) covers that and the quadratic form's
+// rounding for r up to 10^6. Every other rounding (the norms, the sums of squares and the
+// square roots, about (3r + 4)u relative) is far below the growth. The gaps are the same
+// numbers, and rounding is monotone in the quotient and the sums, so the floor never
+// exceeds the computed 1D bound. Smaller constants could lift it above; larger ones only
+// cut fewer pairs early.
+constexpr double kFloorRateGrowth = 1.0 + 1e-9;
+constexpr double kFloorRateAllowance = 1e-12;
+constexpr double kSpreadPad = 1e-9;
+
+/// sqrt(n^T S n + pad): a bound of a vertex's motion along n relative to its triangle's mean.
+double spread_along(const Eigen::Matrix3d& deviation_gram, const Eigen::Vector3d& n) {
+#ifdef SSCC_MUTANT_FLOOR_WITHOUT_SPREAD
+  return 0.0;
+#endif
+  return std::sqrt(std::max(0.0, n.dot(deviation_gram * n)) + kSpreadPad * deviation_gram.trace());
+}
+
+/// The 1D bound's unit axis (the centroids' direction) and its nine vertex-pair gaps, each a
+/// lower bound of n^T (X_b,k - X_a,j) less twice the positions' rounding; false when some
+/// gap is not positive (or the centroids coincide): the bound is then 0.
+bool axis_and_gaps(const ModalTriangle& a, const ModalTriangle& b, const PositionRounding& rounding, Eigen::Vector3d& n,
+                   std::array<double, 9>& gap) {
   const Eigen::Vector3d axis = (b.rest[0] + b.rest[1] + b.rest[2]) - (a.rest[0] + a.rest[1] + a.rest[2]);
   const double length = axis.stableNorm();
-  if (!(length > 0.0)) return 0.0;
-  const Eigen::Vector3d n = axis / length;
+  if (!(length > 0.0)) return false;
+  n = axis / length;
   constexpr double u = std::numeric_limits<double>::epsilon();
-  const PositionRounding rounding = rounding_of_positions(a, b);
-  // Per vertex pair (j, k): a lower bound of the gap n^T (X_b,k - X_a,j), the computed dot
-  // product less its absolute rounding (the difference and the three products).
-  std::array<double, 9> gap, squared{};
   for (int j = 0; j < 3; ++j) {
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d d = b.rest[k] - a.rest[j];
       gap[3 * j + k] = n.dot(d) - 8.0 * u * n.cwiseAbs().dot(d.cwiseAbs()) - 2.0 * rounding.absolute;
-      if (!(gap[3 * j + k] > 0.0)) return 0.0;
+      if (!(gap[3 * j + k] > 0.0)) return false;
     }
+  }
+  return true;
+}
+
+}  // namespace
+
+TriangleSummary summarize(const ModalTriangle& t) {
+  TriangleSummary s;
+  s.mean_modes = (t.modes[0] + t.modes[1] + t.modes[2]) / 3.0;
+  for (int i = 0; i < 3; ++i) {
+    s.largest_coordinate = std::max(s.largest_coordinate, t.rest[i].cwiseAbs().maxCoeff());
+    s.largest_row_norm = std::max(s.largest_row_norm, t.modes[i].rowwise().norm().maxCoeff());
+    s.largest_block_norm = std::max(s.largest_block_norm, t.modes[i].norm());
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> deviation = t.modes[i] - s.mean_modes;
+    s.deviation_grams[i] = deviation * deviation.transpose();
+  }
+  return s;
+}
+
+double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
+  return one_dimensional_radius(a, b, summarize(a), summarize(b));
+}
+
+namespace {
+
+/// The floor (header) from the axis and gaps the 1D bound computes.
+double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
+                       const std::array<double, 9>& gap, const PositionRounding& rounding) {
+  double means = 0.0;
+  for (Eigen::Index c = 0; c < summary_a.mean_modes.cols(); ++c) {
+    const double along = n.dot(summary_b.mean_modes.col(c)) - n.dot(summary_a.mean_modes.col(c));
+    means += along * along;
+  }
+  const double common = std::sqrt(means);
+  const double allowance =
+      kFloorRateAllowance * (summary_a.largest_block_norm + summary_b.largest_block_norm) + 2.0 * rounding.per_norm;
+  std::array<double, 3> spread_a, spread_b;
+  for (int i = 0; i < 3; ++i) {
+    spread_a[i] = spread_along(summary_a.deviation_grams[i], n);
+    spread_b[i] = spread_along(summary_b.deviation_grams[i], n);
+  }
+  double radius = INFINITY;
+  for (int j = 0; j < 3; ++j) {
+    for (int k = 0; k < 3; ++k) {
+      const double rate = kFloorRateGrowth * (common + spread_b[k] + spread_a[j]) + allowance;
+      if (rate > 0.0) radius = std::min(radius, gap[3 * j + k] / rate);
+    }
+  }
+  return kOneDimensionalShrink * radius;
+}
+
+}  // namespace
+
+double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
+                              const TriangleSummary& summary_b, double cut) {
+  constexpr double u = std::numeric_limits<double>::epsilon();
+  const Eigen::Index r = a.modes[0].cols();
+  const PositionRounding rounding = rounding_of_positions(summary_a, summary_b, r);
+  // Per vertex pair (j, k): a lower bound of the gap n^T (X_b,k - X_a,j), the computed dot
+  // product less its absolute rounding (the difference and the three products).
+  Eigen::Vector3d n;
+  std::array<double, 9> gap, squared{};
+  if (!axis_and_gaps(a, b, rounding, n, gap)) return 0.0;
+  if (cut < INFINITY) {
+    const double floor = floor_from_gaps(summary_a, summary_b, n, gap, rounding);
+    if (floor >= cut) return floor;
   }
   // And an upper bound of the squared rate ||n^T (U_b,k - U_a,j)||^2, column by column: each
   // projected difference grown by the rounding of the two projections it subtracts.
-  const Eigen::Index r = a.modes[0].cols();
+  const Eigen::Vector3d magnitude = n.cwiseAbs();
   for (Eigen::Index c = 0; c < r; ++c) {
     std::array<double, 3> along_a, along_b, slack_a, slack_b;
     for (int i = 0; i < 3; ++i) {
       along_a[i] = n.dot(a.modes[i].col(c));
       along_b[i] = n.dot(b.modes[i].col(c));
-      slack_a[i] = 4.0 * u * n.cwiseAbs().dot(a.modes[i].col(c).cwiseAbs());
-      slack_b[i] = 4.0 * u * n.cwiseAbs().dot(b.modes[i].col(c).cwiseAbs());
+      slack_a[i] = 4.0 * u * magnitude.dot(a.modes[i].col(c).cwiseAbs());
+      slack_b[i] = 4.0 * u * magnitude.dot(b.modes[i].col(c).cwiseAbs());
     }
     for (int j = 0; j < 3; ++j) {
       for (int k = 0; k < 3; ++k) {
@@ -375,6 +496,15 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
     if (rate > 0.0) radius = std::min(radius, gap[i] / rate);
   }
   return kOneDimensionalShrink * radius;
+}
+
+double one_dimensional_radius_floor(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
+                                    const TriangleSummary& summary_b) {
+  const PositionRounding rounding = rounding_of_positions(summary_a, summary_b, a.modes[0].cols());
+  Eigen::Vector3d n;
+  std::array<double, 9> gap;
+  if (!axis_and_gaps(a, b, rounding, n, gap)) return 0.0;
+  return floor_from_gaps(summary_a, summary_b, n, gap, rounding);
 }
 
 }  // namespace sscc

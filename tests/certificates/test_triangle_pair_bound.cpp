@@ -25,6 +25,16 @@ struct PairMaker {
     return p;
   }
 
+  /// r random linear and quadratic fields (the quadratic ones scaled by `quadratic_scale`).
+  std::pair<std::vector<Eigen::Matrix3d>, std::vector<Eigen::Matrix3d>> fields(int r, double quadratic_scale) {
+    std::vector<Eigen::Matrix3d> linear(r), quadratic(r);
+    for (int j = 0; j < r; ++j) {
+      linear[j] = Eigen::Matrix3d::NullaryExpr([&] { return normal(rng); });
+      quadratic[j] = Eigen::Matrix3d::NullaryExpr([&] { return quadratic_scale * normal(rng); });
+    }
+    return {linear, quadratic};
+  }
+
   /// Modes: random, or smooth (a random linear and quadratic field of the position, as
   /// real bases are), r columns.
   ModalTriangle with_modes(const std::array<Eigen::Vector3d, 3>& rest, const std::vector<Eigen::Matrix3d>& linear,
@@ -53,11 +63,7 @@ TEST_CASE("triangle-pair radius: the lower bound never exceeds a searched contac
   int tested = 0, accurate = 0;
   for (int trial = 0; trial < 240; ++trial) {
     const int r = 1 + trial % 8;
-    std::vector<Eigen::Matrix3d> linear(r), quadratic(r);
-    for (int j = 0; j < r; ++j) {
-      linear[j] = Eigen::Matrix3d::NullaryExpr([&] { return m.normal(m.rng); });
-      quadratic[j] = Eigen::Matrix3d::NullaryExpr([&] { return 0.5 * m.normal(m.rng); });
-    }
+    const auto [linear, quadratic] = m.fields(r, 0.5);
     std::array<Eigen::Vector3d, 3> a{m.point(0.3), m.point(0.3), m.point(0.3)};
     std::array<Eigen::Vector3d, 3> b;
     const Eigen::Vector3d offset = m.point(0.4);
@@ -205,4 +211,48 @@ TEST_CASE("triangle-pair radius: the Gram rounding pad covers the rounding of r-
       }
     }
   }
+}
+
+TEST_CASE("1D floor: never above the 1D bound, and the cut answers as the 1D bound does", "[certificates][floor]") {
+  PairMaker m(29);
+  int compared = 0, informative = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int r = 1 + trial % 40;
+    const auto [linear, quadratic] = m.fields(r, 1.0);
+    // Neighbours (the pairs the precomputation meets most), far pairs, and pairs far from
+    // the origin (large rest coordinates, where the rounding allowances matter).
+    const double size = trial % 3 == 0 ? 0.05 : 0.3;
+    const Eigen::Vector3d origin = trial % 5 == 0 ? m.point(1e6) : Eigen::Vector3d::Zero();
+    std::array<Eigen::Vector3d, 3> a, b;
+    const Eigen::Vector3d offset = m.point(trial % 2 == 0 ? 2.0 * size : 1.0);
+    for (int i = 0; i < 3; ++i) {
+      a[i] = origin + m.point(size);
+      b[i] = origin + offset + m.point(size);
+    }
+    const bool smooth = trial % 4 != 0;
+    const double noise = trial % 7 == 0 ? 0.0 : 0.01;
+    const ModalTriangle ta = m.with_modes(a, linear, quadratic, smooth, noise);
+    const ModalTriangle tb = m.with_modes(b, linear, quadratic, smooth, noise);
+    const sscc::TriangleSummary sa = sscc::summarize(ta), sb = sscc::summarize(tb);
+    const double bound = sscc::one_dimensional_radius(ta, tb);
+    const double floor = sscc::one_dimensional_radius_floor(ta, tb, sa, sb);
+    INFO("trial " << trial << " r " << r << " 1D " << bound << " floor " << floor);
+    REQUIRE(floor >= 0.0);
+    REQUIRE(floor <= bound);
+    REQUIRE(sscc::one_dimensional_radius(ta, tb, sa, sb) == bound);
+    // With a cut: the 1D bound itself below the floor's reach, at least the cut above it.
+    for (double cut : {0.5 * floor, floor, 1.5 * floor + 1e-300, 2.0 * bound}) {
+      const double answer = sscc::one_dimensional_radius(ta, tb, sa, sb, cut);
+      REQUIRE(answer <= bound);
+      REQUIRE((answer >= cut) == (bound >= cut));
+      if (!(floor >= cut)) REQUIRE(answer == bound);
+    }
+    if (bound > 0.0) {
+      ++compared;
+      if (floor >= 0.25 * bound) ++informative;
+    }
+  }
+  // The floor earns its place only when it is close to the 1D bound on most pairs.
+  REQUIRE(compared > 1000);
+  REQUIRE(informative > compared / 2);
 }
