@@ -60,8 +60,20 @@ PositionRounding rounding_of_positions(const TriangleSummary& a, const TriangleS
           c * std::max(a.largest_row_norm, b.largest_row_norm)};
 }
 
+/// The summary's largest coordinate, row and block of t: all the 1D bound reads of it
+/// without a cut, and all the position rounding needs.
+TriangleSummary scales_of(const ModalTriangle& t) {
+  TriangleSummary s;
+  for (int i = 0; i < 3; ++i) {
+    s.largest_coordinate = std::max(s.largest_coordinate, t.rest[i].cwiseAbs().maxCoeff());
+    s.largest_row_norm = std::max(s.largest_row_norm, t.modes[i].rowwise().norm().maxCoeff());
+    s.largest_block_norm = std::max(s.largest_block_norm, t.modes[i].norm());
+  }
+  return s;
+}
+
 PositionRounding rounding_of_positions(const ModalTriangle& a, const ModalTriangle& b) {
-  return rounding_of_positions(summarize(a), summarize(b), a.modes[0].cols());
+  return rounding_of_positions(scales_of(a), scales_of(b), a.modes[0].cols());
 }
 
 /// The two triangles of a pair, reduced to what the bounds need: the six rest vertices and
@@ -374,9 +386,16 @@ namespace {
 // numbers, and rounding is monotone in the quotient and the sums, so the floor never
 // exceeds the computed 1D bound. Smaller constants could lift it above; larger ones only
 // cut fewer pairs early.
+// Both ends of the range: squares that underflow err by up to 2^-1074 each in absolute
+// terms, which nothing relative covers: sqrt((r + 16) DBL_MIN), 2^26 times sqrt(r 2^-1074),
+// is added to every floor rate (no effect on rates of any normal size). And blocks whose
+// sum reaches kLargestFloorBlocks could overflow the 1D bound's sums of squares (to a rate
+// of infinity, a bound of 0) before the floor's: there the floor abstains (returns 0), as
+// it does on any rate that is not a positive number.
 constexpr double kFloorRateGrowth = 1.0 + 1e-9;
 constexpr double kFloorRateAllowance = 1e-12;
 constexpr double kSpreadPad = 1e-9;
+constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up to 10^6
 
 /// sqrt(n^T S n + pad): a bound of a vertex's motion along n relative to its triangle's mean.
 double spread_along(const Eigen::Matrix3d& deviation_gram, const Eigen::Vector3d& n) {
@@ -409,12 +428,11 @@ bool axis_and_gaps(const ModalTriangle& a, const ModalTriangle& b, const Positio
 }  // namespace
 
 TriangleSummary summarize(const ModalTriangle& t) {
-  TriangleSummary s;
+  TriangleSummary s = scales_of(t);
   s.mean_modes = (t.modes[0] + t.modes[1] + t.modes[2]) / 3.0;
   for (int i = 0; i < 3; ++i) {
-    s.largest_coordinate = std::max(s.largest_coordinate, t.rest[i].cwiseAbs().maxCoeff());
-    s.largest_row_norm = std::max(s.largest_row_norm, t.modes[i].rowwise().norm().maxCoeff());
-    s.largest_block_norm = std::max(s.largest_block_norm, t.modes[i].norm());
+    s.deviation_grams[i].setZero();
+    if (!(s.largest_block_norm < kLargestFloorBlocks)) continue;  // the floor abstains there
     const Eigen::Matrix<double, 3, Eigen::Dynamic> deviation = t.modes[i] - s.mean_modes;
     s.deviation_grams[i] = deviation * deviation.transpose();
   }
@@ -422,7 +440,7 @@ TriangleSummary summarize(const ModalTriangle& t) {
 }
 
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
-  return one_dimensional_radius(a, b, summarize(a), summarize(b));
+  return one_dimensional_radius(a, b, scales_of(a), scales_of(b));
 }
 
 namespace {
@@ -430,14 +448,17 @@ namespace {
 /// The floor (header) from the axis and gaps the 1D bound computes.
 double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
                        const std::array<double, 9>& gap, const PositionRounding& rounding) {
+  const double blocks = summary_a.largest_block_norm + summary_b.largest_block_norm;
+  if (!(blocks < kLargestFloorBlocks)) return 0.0;
+  const double modes = static_cast<double>(summary_a.mean_modes.cols());
   double means = 0.0;
   for (Eigen::Index c = 0; c < summary_a.mean_modes.cols(); ++c) {
     const double along = n.dot(summary_b.mean_modes.col(c)) - n.dot(summary_a.mean_modes.col(c));
     means += along * along;
   }
   const double common = std::sqrt(means);
-  const double allowance =
-      kFloorRateAllowance * (summary_a.largest_block_norm + summary_b.largest_block_norm) + 2.0 * rounding.per_norm;
+  const double allowance = kFloorRateAllowance * blocks + 2.0 * rounding.per_norm +
+                           std::sqrt((modes + 16.0) * std::numeric_limits<double>::min());
   std::array<double, 3> spread_a, spread_b;
   for (int i = 0; i < 3; ++i) {
     spread_a[i] = spread_along(summary_a.deviation_grams[i], n);
@@ -447,7 +468,8 @@ double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& 
   for (int j = 0; j < 3; ++j) {
     for (int k = 0; k < 3; ++k) {
       const double rate = kFloorRateGrowth * (common + spread_b[k] + spread_a[j]) + allowance;
-      if (rate > 0.0) radius = std::min(radius, gap[3 * j + k] / rate);
+      if (!(rate > 0.0) || !std::isfinite(rate)) return 0.0;
+      radius = std::min(radius, gap[3 * j + k] / rate);
     }
   }
   return kOneDimensionalShrink * radius;
