@@ -117,10 +117,11 @@ struct PrecomputeStats {
 };
 
 /// Where a precomputation stands. Its work items are a leaf's own triangle pairs and a pair of
-/// sibling nodes; each counts as many units as it has triangles, a measure of its cost known
-/// before it runs, so work_done / work says roughly how far it is. Each level above the
-/// leaves' has about 3 units per triangle; measured on the 15k-triangle bunny, 27 modes, a
-/// unit took 0.09 to 0.25 ms on every level but the root's (0.014 ms) and those of few nodes.
+/// sibling nodes; each counts as many units as it has triangle pairs, plus 1024 per triangle, a
+/// measure of its cost known before it runs (nearly every pair is screened by the 1D bound,
+/// and the pairs bounded lie along the nodes' borders), so work_done / work says roughly how
+/// far it is. The pairs make the levels near the root the largest: about three eighths of
+/// all pairs are the root's children's.
 struct PrecomputeStatus {
   int levels_done = 0;  ///< tree levels finished (the deepest first)
   int levels = 0;       ///< levels to compute
