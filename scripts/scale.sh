@@ -30,8 +30,8 @@ for n in "${sizes[@]}"; do
   line="$output/scale_$n.txt"
   time_kb=$(sed -n 's/.*Maximum resident set size (kbytes): *//p' "$output/scale_$n.log")
   time_mb=$([ -n "$time_kb" ] && awk "BEGIN { printf \"%.0f\", $time_kb / 1024 }" || echo "-")
-  rows+=("| $(field triangles "$line") | $(field nodes "$line") | $(field hierarchy_s "$line") | $(field certificates_s "$line") | $(field detector_s "$line") | $(field prepare_s "$line") | $(field query_ms_per_step "$line") | $(field total_s "$line") | $time_mb | $(field peak_rss_mb "$line") |")
+  rows+=("| $(field triangles "$line") | $(field nodes "$line") | $(field hierarchy_s "$line") | $(field certificates_s "$line") | $(field detector_s "$line") | $(field prepare_s "$line") | $(field query_ms_per_step "$line") | $(field total_s "$line") | $time_mb | $(field peak_rss_mb "$line") | $(field pairs_screened "$line") | $(field screened_per_pair "$line") |")
 done
-echo "| triangles | nodes | hierarchy s | certificates s | detector s | prepare s | query ms/step | total s | peak MB (time -v) | peak MB (getrusage) |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
+echo "| triangles | nodes | hierarchy s | certificates s | detector s | prepare s | query ms/step | total s | peak MB (time -v) | peak MB (getrusage) | triangle pairs screened | per pair of the mesh |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 printf '%s\n' "${rows[@]}"
