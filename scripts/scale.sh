@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # How the pipeline grows with the mesh: `sscc scale` at each size given (triangles; default
 # 10000 100000 1000000), each in its own process under /usr/bin/time -v, then a Markdown table
-# of the times and the peak memory (the resident set /usr/bin/time reports, and the process's
-# own getrusage figure beside it). Each size's output and log go to scale-output/.
+# of the times, the peak memory (the resident set /usr/bin/time reports, and the process's
+# own getrusage figure beside it) and the triangle pairs the precomputation screened. Each size's output and log go to scale-output/.
 #
 #   bash scripts/scale.sh                 # 10^4, 10^5, 10^6 triangles
 #   bash scripts/scale.sh 10000 100000    # those sizes only

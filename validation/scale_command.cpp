@@ -90,7 +90,7 @@ long run_scale(const ScaleOptions& o, std::ostream& out, std::ostream& progress)
                 "root_radius=%.6g pairs_screened=%ld screened_per_pair=%.3f",
                 model.mesh().triangle_count(), model.mesh().vertex_count(), bvh->nodes().size(), hierarchy_s,
                 certificates_s, detector_s, prepare_s, 1e3 * query_s / o.steps, colliding, seconds_since(start),
-                peak_rss_mb(), radius, screened, screened / all_pairs);
+                peak_rss_mb(), radius, screened, all_pairs > 0.0 ? screened / all_pairs : 0.0);
   out << line << '\n';
   return 0;
 }

@@ -5,7 +5,7 @@
 // the root's radius (the traversal then runs on most steps), printing the line
 //   scale: triangles=N vertices=N nodes=N hierarchy_s=X certificates_s=X detector_s=X
 //          prepare_s=X query_ms_per_step=X colliding_steps=N total_s=X peak_rss_mb=X
-//          root_radius=X
+//          root_radius=X pairs_screened=N screened_per_pair=X
 // (one line; prepare_s: SelfCcd::prepare, what the first query would otherwise build). Peak memory is the process's
 // (getrusage), so run one size per process: scripts/scale.sh does, and prints the table of several sizes.
 #pragma once

@@ -337,12 +337,12 @@ namespace {
 
 // A work item's cost model (PrecomputeStatus): each of its triangle pairs is screened by the
 // 1D bound (nearly every pair, once by the sibling pair's descent and once more below its pair
-// certificates), and the pairs bounded lie along the nodes' borders, counted per triangle.
-// Measured on the lion (27 polynomial modes): a screened pair costs about 0.2 us and the pairs
-// bounded about 0.2 ms per triangle and level, a thousand pairs' worth. With it the estimate of
-// time left was within 15% from a third of the way on the lion (without the pairs, 2x short
-// at the root's level); on sscc scale's sphere, where screening is nearly all, it falls short
-// there by up to 2x. Only the progress estimate and the order of the work items depend on it.
+// certificates), and the pairs bounded lie along the nodes' borders, counted per triangle of
+// the item (a triangle is in three sibling pairs per level). The constant is fitted to the
+// lion (27 polynomial modes), where a screened pair costs about 0.2 us: the estimate of time
+// left there was 21 s at 43% for 16 s and 9 s at 71% for 9 s (with the triangles alone, 4 s
+// at 85% for 9 s); on sscc scale's 20k sphere, where screening is nearly all, 10 s at 66% for
+// 15 s. Only the progress estimate and the order of the work items depend on it.
 constexpr long kUnitsPerTriangle = 1024;
 
 long item_units(long pairs, long triangles) { return pairs + kUnitsPerTriangle * triangles; }

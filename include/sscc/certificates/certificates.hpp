@@ -120,8 +120,8 @@ struct PrecomputeStats {
 /// sibling nodes; each counts as many units as it has triangle pairs, plus 1024 per triangle, a
 /// measure of its cost known before it runs (nearly every pair is screened by the 1D bound,
 /// and the pairs bounded lie along the nodes' borders), so work_done / work says roughly how
-/// far it is. The pairs make the levels near the root the largest: about three eighths of
-/// all pairs are the root's children's.
+/// far it is. The pairs make the levels near the root the largest: about three quarters of
+/// all pairs are between the root's children.
 struct PrecomputeStatus {
   int levels_done = 0;  ///< tree levels finished (the deepest first)
   int levels = 0;       ///< levels to compute
