@@ -19,6 +19,7 @@ py::dict stats_dict(const SelfCcdStats& s) {
   d["triangle_pairs"] = s.triangle_pairs;
   d["kernel_calls"] = s.kernel_calls;
   d["vertices_computed"] = s.vertices_computed;
+  d["vertex_starts_reused"] = s.vertex_starts_reused;
   d["certified"] = s.certified;
   d["cone_culled"] = s.cone_culled;
   d["cone_radius_culled"] = s.cone_radius_culled;
@@ -110,7 +111,8 @@ void bind_self_report(py::module_& m) {
       .def_property_readonly(
           "stats", [](const SelfReport& r) { return stats_dict(r.stats); },
           "The query's work as a dict: nodes_visited, box_tests, triangle_pairs, kernel_calls, "
-          "vertices_computed, certified (nodes and sibling pairs culled by a certificate), "
+          "vertices_computed, vertex_starts_reused (of those, the ones whose start was the previous "
+          "step's end), certified (nodes and sibling pairs culled by a certificate), "
           "root_certified (the whole step decided by the root's certificate) and seconds.")
       .def("__repr__", [](const SelfReport& r) {
         return "<sscc.SelfCcdReport: " + std::to_string(r.pairs.size()) + " pairs, " +

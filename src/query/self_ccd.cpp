@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -21,6 +22,7 @@
 #include "query/descent.hpp"
 #include "query/displacement_bound.hpp"
 #include "query/feature_hits.hpp"
+#include "query/hierarchy_vertices.hpp"
 #include "query/patch_cull.hpp"
 #include "query/patch_radius.hpp"
 #include "query/separating_plane.hpp"
@@ -189,6 +191,7 @@ struct StepCulls {
   const detail::PatchRadii* radii = nullptr;           // the normal cones bounded from the norm
   const detail::DisplacementBounds* displacement = nullptr;
   const detail::UnconsideredLeafPairs* unconsidered = nullptr;  // leaf pairs skipped with the cones
+  const detail::HierarchyVertices* vertices = nullptr;          // for vertices computed on demand
 };
 
 /// What every query needs per call: the positions computed so far, the feature results,
@@ -222,8 +225,9 @@ class StepContext {
         triangle_sweeps_(buffers_->triangle_sweeps),
         triangle_normals_(buffers_->triangle_normals),
         hits_(options.mode, &stats_.kernel_calls),
-        unconsidered_(culls.unconsidered) {
-    computed_.assign(mesh_.vertex_count(), shared ? 1 : 0);
+        unconsidered_(culls.unconsidered),
+        hierarchy_vertices_(culls.vertices) {
+    start_from_previous_end(shared);
     subspace_boxes_.reset(bvh.nodes().size());
     node_sweeps_.reset(bvh.nodes().size());
     triangle_sweeps_.reset(mesh_.triangle_count());
@@ -279,7 +283,7 @@ class StepContext {
     own_x1_.assign(x1.begin(), x1.end());
     x0_ = own_x0_.data();
     x1_ = own_x1_.data();
-    std::fill(computed_.begin(), computed_.end(), 1);
+    std::fill(computed_.begin(), computed_.end(), detail::kVertexKnown);
   }
 
   /// Whether two nodes may hold touching triangles: with refitted boxes, their boxes at both
@@ -454,11 +458,64 @@ class StepContext {
     });
   }
 
+  /// Computes vertex v unless known; on demand (hierarchy_vertices_ given), with the rest of
+  /// its chunk in the hierarchy's order (hierarchy_vertices.hpp).
   void ensure_vertex(int v) {
-    if (computed_[v]) return;
-    bvh_.model().position_pair(v, q_hat0_, q_hat1_, x0_[v], x1_[v]);
-    computed_[v] = 1;
+    if (computed_[v] == detail::kVertexKnown) return;
+    if (!hierarchy_vertices_) return compute_vertex(v, bvh_.model().vertex_block(v));
+    const detail::HierarchyVertices& order = *hierarchy_vertices_;
+    const int begin = order.rank(v) / detail::HierarchyVertices::kChunk * detail::HierarchyVertices::kChunk;
+    const int end = std::min(begin + detail::HierarchyVertices::kChunk, order.count());
+    for (int i = begin; i < end; ++i) {
+      const int u = order.vertex(i);
+      if (computed_[u] != detail::kVertexKnown) compute_vertex(u, order.rows(i));
+    }
+  }
+
+  /// Vertex v's positions from its basis block `rows`: the end only when the start is the
+  /// previous step's end.
+  void compute_vertex(int v, const double* rows) {
+    const Eigen::Vector3d& rest = mesh_.vertices()[v];
+    if (computed_[v] == detail::kVertexStartKnown) {
+      x1_[v] = SubspaceModel::position(rest, rows, q_hat1_);
+      ++stats_.vertex_starts_reused;
+    } else {
+      SubspaceModel::position_pair(rest, rows, q_hat0_, q_hat1_, x0_[v], x1_[v]);
+    }
+    computed_[v] = detail::kVertexKnown;
     ++stats_.vertices_computed;
+  }
+
+  /// Resets the vertices' states for this step. A step that starts where the buffers' last
+  /// one ended (a simulator's next step, coordinates equal to the bit) starts from the
+  /// positions that one computed at its end: the same values (the same operations on the
+  /// same data), half the work for each vertex both reach. Records this step's end for the
+  /// next, unless the positions are shared or not computed from coordinates.
+  void start_from_previous_end(bool shared) {
+    const int count = mesh_.vertex_count();
+    std::vector<char>& state = computed_;
+    Eigen::VectorXd& previous_end = buffers_->end_coordinates;
+    const bool continues = !shared && q_hat0_.size() > 0 && previous_end.size() == q_hat0_.size() &&
+                           static_cast<int>(state.size()) == count &&
+                           std::equal(q_hat0_.data(), q_hat0_.data() + q_hat0_.size(), previous_end.data(),
+                                      [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; });
+    if (continues) {
+      for (int v = 0; v < count; ++v) {
+        if (state[v] == detail::kVertexKnown) {
+          x0_[v] = x1_[v];
+          state[v] = detail::kVertexStartKnown;
+        } else {
+          state[v] = detail::kVertexUnknown;
+        }
+      }
+    } else {
+      state.assign(count, shared ? detail::kVertexKnown : detail::kVertexUnknown);
+    }
+    if (shared || q_hat0_.size() == 0) {
+      previous_end.resize(0);
+    } else {
+      previous_end = q_hat1_;
+    }
   }
 
   /// Neither adjacent nor excluded (excluded_pairs.hpp): the pairs a query considers. The
@@ -558,6 +615,7 @@ class StepContext {
   std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no cones formed per step
   std::unique_ptr<detail::StepDisplacement> displacement_;  // null: no displacement cull
   const detail::UnconsideredLeafPairs* unconsidered_;       // null: no leaf pairs skipped
+  const detail::HierarchyVertices* hierarchy_vertices_;     // null: vertices one at a time
   const detail::FirstHitTask* cancel_ = nullptr;
   int task_ = 0;
 };
@@ -856,6 +914,11 @@ class CullData {
     });
     return unconsidered_.get();
   }
+  /// The basis in the hierarchy's order, for steps that compute vertices on demand.
+  const HierarchyVertices* hierarchy_vertices() {
+    std::call_once(vertices_once_, [&] { vertices_ = std::make_unique<const HierarchyVertices>(*bvh_); });
+    return vertices_.get();
+  }
   /// The buffers the queries' contexts lend (step_buffers.hpp).
   StepBufferPool& buffers() { return buffers_; }
 
@@ -872,7 +935,8 @@ class CullData {
 
   std::shared_ptr<const SubspaceBvh> bvh_;
   std::shared_ptr<const Certificates> certificates_;
-  std::once_flag boundaries_once_, displacement_once_, radii_once_, patch_radii_once_, unconsidered_once_, work_once_;
+  std::once_flag boundaries_once_, displacement_once_, radii_once_, patch_radii_once_, unconsidered_once_, work_once_,
+      vertices_once_;
   std::vector<double> radii_;  // sorted
   std::unique_ptr<const NodeBoundaries> boundaries_;
   bool cones_pay_ = false;
@@ -880,6 +944,7 @@ class CullData {
   std::unique_ptr<const PatchRadii> patch_radii_;
   std::unique_ptr<const UnconsideredLeafPairs> unconsidered_;
   std::unique_ptr<const UncertifiedWork> work_;
+  std::unique_ptr<const HierarchyVertices> vertices_;
   std::atomic<bool> built_[kPartCount] = {};
   StepBufferPool buffers_;
 };
@@ -952,6 +1017,7 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
           : culls_->boundaries(options);
   culls.radii = culls_->radii(options);
   culls.unconsidered = culls_->unconsidered_leaf_pairs(options);
+  if (!far_past) culls.vertices = culls_->hierarchy_vertices();
   if (threads > 1) {
     // Far past the root's certificate (threads > 1 only there) nearly every vertex is
     // reached: computed once, a share per thread, instead of once by every thread's context.
@@ -976,7 +1042,10 @@ void SelfCcd::prepare(const SelfCcdOptions& options) const {
   culls_->displacement(options, certificates != nullptr);
   culls_->unconsidered_leaf_pairs(options);
   if (certificates && options.use_normal_cones) culls_->certified_fraction(0.0);  // query() asks for it then
-  if (certificates) culls_->uncertified_work(0.0);
+  if (certificates) {
+    culls_->uncertified_work(0.0);
+    culls_->hierarchy_vertices();  // the steps near the root's radius compute vertices on demand
+  }
 }
 
 SelfCcdBuiltParts SelfCcd::built_parts() const { return culls_->built(); }

@@ -19,9 +19,20 @@
 
 namespace sscc::detail {
 
+/// What a query knows of a vertex's positions.
+enum VertexState : char {
+  kVertexUnknown = 0,
+  kVertexKnown = 1,       // both ends of the step
+  kVertexStartKnown = 2,  // the start only: the previous step's end
+};
+
 struct StepBuffers {
   std::vector<Eigen::Vector3d> x0, x1;  // the positions, unless the query shares them
-  std::vector<char> computed;           // per vertex: its positions are known
+  std::vector<char> computed;           // per vertex: which of its positions are known (VertexState)
+  /// The q_hat1 of the last query whose known positions the buffers hold (empty: none, or
+  /// positions it did not compute from coordinates). A next query starting there
+  /// (q_hat0 bitwise equal: a simulator's next step) takes their x1 as its x0.
+  Eigen::VectorXd end_coordinates;
   LazyBoxes<Aabb> subspace_boxes;
   LazyBoxes<Sweep> node_sweeps;
   LazyBoxes<Sweep> triangle_sweeps;              // by position in the hierarchy's triangle order

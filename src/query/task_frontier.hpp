@@ -59,6 +59,7 @@ inline void add_counts(SelfCcdStats& a, const SelfCcdStats& b) {
   a.triangle_pairs += b.triangle_pairs;
   a.kernel_calls += b.kernel_calls;
   a.vertices_computed += b.vertices_computed;
+  a.vertex_starts_reused += b.vertex_starts_reused;
   a.certified += b.certified;
   a.pair_certified += b.pair_certified;
   a.cone_culled += b.cone_culled;

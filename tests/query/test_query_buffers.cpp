@@ -91,6 +91,7 @@ void require_same_report(const sscc::SelfCcdReport& reused, const sscc::SelfCcdR
   REQUIRE(reused.stats.triangle_pairs == fresh.stats.triangle_pairs);
   REQUIRE(reused.stats.kernel_calls == fresh.stats.kernel_calls);
   REQUIRE(reused.stats.vertices_computed == fresh.stats.vertices_computed);
+  REQUIRE(reused.stats.vertex_starts_reused == 0);  // no step here starts where another ends
   REQUIRE(reused.stats.certified == fresh.stats.certified);
   REQUIRE(reused.stats.cone_culled == fresh.stats.cone_culled);
   REQUIRE(reused.stats.cone_radius_culled == fresh.stats.cone_radius_culled);
@@ -217,4 +218,58 @@ TEST_CASE("query buffers: a pinched torus's keyframes (displacement bounds, the 
   CHECK(tally.clear >= 10);
   CHECK(tally.displacement_culled > 0);
   CHECK(tally.radius_culled > 0);
+}
+
+TEST_CASE(
+    "query buffers: a simulator's consecutive steps start from the previous step's end positions, reporting what "
+    "fresh detectors and exhaustive testing do",
+    "[query]") {
+  const auto sphere = sscc::test::certified_sphere();
+  const sscc::SelfCcd ccd(sphere->bvh, sphere->certificates);
+  const double root = sphere->certificates.node_radius(0);
+  std::mt19937_64 rng(43);
+  // A closed path in q_hat between 1 and about 2.6 root radii (the steps computing vertices
+  // on demand, some colliding), in small steps; a jump to an unrelated pose in the middle,
+  // whose start is not the previous end.
+  const Eigen::VectorXd centre = sscc::test::random_scaled_coordinates(rng, 27, 1.8 * root);
+  const Eigen::VectorXd u = sscc::test::random_scaled_coordinates(rng, 27, 0.8 * root);
+  const Eigen::VectorXd w = sscc::test::random_scaled_coordinates(rng, 27, 0.8 * root);
+  const int count = 40;
+  std::vector<Step> steps;
+  for (int k = 0; k < count; ++k) {
+    const auto at = [&](int i) {
+      const double angle = 2.0 * M_PI * i / count;
+      return Eigen::VectorXd(centre + std::cos(angle) * u + std::sin(angle) * w);
+    };
+    if (k == count / 2) {
+      steps.push_back(step_of(sphere->model, at(k + 7), at(k + 1)));  // a jump
+      continue;
+    }
+    steps.push_back(step_of(sphere->model, at(k), at(k + 1)));
+  }
+  sscc::SelfCcdOptions options = on_threads(1);
+  long reused = 0, computed = 0;
+  int colliding = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    INFO("step " << i);
+    const sscc::SelfCcdReport report = ccd.query(steps[i].q0, steps[i].q1, options);
+    const sscc::SelfCcd fresh(std::make_shared<const sscc::SubspaceBvh>(ccd.bvh()),
+                              std::make_shared<const sscc::Certificates>(*ccd.certificates()));
+    const sscc::SelfCcdReport expected = fresh.query(steps[i].q0, steps[i].q1, options);
+    require_same_report(report, expected, false);
+    REQUIRE(report.stats.nodes_visited == expected.stats.nodes_visited);
+    REQUIRE(report.stats.kernel_calls == expected.stats.kernel_calls);
+    REQUIRE(report.stats.vertices_computed == expected.stats.vertices_computed);
+    REQUIRE(expected.stats.vertex_starts_reused == 0);
+    REQUIRE(report.stats.vertex_starts_reused <= report.stats.vertices_computed);
+    if (i == 0 || static_cast<int>(i) == count / 2) REQUIRE(report.stats.vertex_starts_reused == 0);
+    REQUIRE(report.pairs == ccd.query_exhaustive(steps[i].q0, steps[i].q1).pairs);
+    reused += report.stats.vertex_starts_reused;
+    computed += report.stats.vertices_computed;
+    colliding += report.collided() ? 1 : 0;
+  }
+  CHECK(colliding >= 3);
+  CHECK(colliding < count);
+  // Most vertices a step reaches were reached by the previous one too.
+  CHECK(reused > computed / 2);
 }

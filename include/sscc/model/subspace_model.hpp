@@ -61,21 +61,35 @@ class SubspaceModel {
   /// of its block dotted with q_hat in order (the rounding every bound allows for: an r-term
   /// dot product and one addition).
   Eigen::Vector3d position(int v, const Eigen::VectorXd& q_hat) const {
+    return position(state_->mesh.vertices()[v], vertex_block(v), q_hat);
+  }
+  /// position for a vertex at rest position `rest` whose 3 x r block (row-major) is `rows`.
+  static Eigen::Vector3d position(const Eigen::Vector3d& rest, const double* rows, const Eigen::VectorXd& q_hat) {
     const int r = static_cast<int>(q_hat.size());
-    const double* rows = state_->scaled_basis.data() + 3 * static_cast<std::ptrdiff_t>(v) * r;
     const double* q = q_hat.data();
     double sum[3] = {0.0, 0.0, 0.0};
     for (int k = 0; k < r; ++k) {
       for (int i = 0; i < 3; ++i) sum[i] += rows[i * r + k] * q[k];
     }
-    return state_->mesh.vertices()[v] + Eigen::Vector3d(sum[0], sum[1], sum[2]);
+    return rest + Eigen::Vector3d(sum[0], sum[1], sum[2]);
+  }
+  /// Vertex v's 3 x r block of the scaled basis (row-major, three contiguous rows).
+  const double* vertex_block(int v) const {
+    return state_->scaled_basis.data() + 3 * static_cast<std::ptrdiff_t>(v) * state_->scaled_basis.cols();
   }
   /// position(v, q_hat0) and position(v, q_hat1) (the same operations in the same order) in one pass over v's rows of
   /// the basis (the queries need both ends of a step).
   void position_pair(int v, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, Eigen::Vector3d& x0,
                      Eigen::Vector3d& x1) const {
+    position_pair(state_->mesh.vertices()[v], vertex_block(v), q_hat0, q_hat1, x0, x1);
+  }
+  /// position_pair for a vertex at rest position `rest` whose 3 x r block (row-major) is
+  /// `rows`: the same values as position(rest, rows, q_hat0) and position(rest, rows, q_hat1),
+  /// and as the model's own for its vertex's block (copies of the basis laid out for a
+  /// query's order of access use it).
+  static void position_pair(const Eigen::Vector3d& rest, const double* rows, const Eigen::VectorXd& q_hat0,
+                            const Eigen::VectorXd& q_hat1, Eigen::Vector3d& x0, Eigen::Vector3d& x1) {
     const int r = static_cast<int>(q_hat0.size());
-    const double* rows = state_->scaled_basis.data() + 3 * static_cast<std::ptrdiff_t>(v) * r;
     const double* q0 = q_hat0.data();
     const double* q1 = q_hat1.data();
     double sum0[3] = {0.0, 0.0, 0.0}, sum1[3] = {0.0, 0.0, 0.0};
@@ -85,8 +99,8 @@ class SubspaceModel {
         sum1[i] += rows[i * r + k] * q1[k];
       }
     }
-    x0 = state_->mesh.vertices()[v] + Eigen::Vector3d(sum0[0], sum0[1], sum0[2]);
-    x1 = state_->mesh.vertices()[v] + Eigen::Vector3d(sum1[0], sum1[1], sum1[2]);
+    x0 = rest + Eigen::Vector3d(sum0[0], sum0[1], sum0[2]);
+    x1 = rest + Eigen::Vector3d(sum1[0], sum1[1], sum1[2]);
   }
   /// All positions for coordinates q (not scaled).
   std::vector<Eigen::Vector3d> deformed_positions(const Eigen::VectorXd& q) const;

@@ -158,6 +158,10 @@ struct SelfCcdStats {
   long triangle_pairs = 0;  ///< non-adjacent pairs whose boxes over the step may meet
   long kernel_calls = 0;
   long vertices_computed = 0;
+  /// Of vertices_computed, those whose start position was the previous step's end: a query
+  /// starting where the last one on the detector ended (q0 equal to its q1, bit for bit, as a
+  /// simulator's next step does) computes only their end.
+  long vertex_starts_reused = 0;
   long certified = 0;            ///< nodes, sibling pairs and node pairs below them culled by a certificate
   long pair_certified = 0;       ///< of those, node pairs below sibling pairs (pair certificates)
   long cone_culled = 0;          ///< nodes and node pairs culled by the normal-cone test
