@@ -18,12 +18,14 @@ namespace sscc::detail {
 class HierarchyVertices {
  public:
   /// Vertices computed together, consecutive in the hierarchy's order. Measured, one
-  /// thread, the hard spring (`sscc demo --scene spring --strike-speed 7 --steps 17640
-  /// --fcl-steps 0`, 20 modes), SSCC's speedup over the traditional query in two runs: chunks
-  /// of 1 vertex 23.0x and 23.0x, 8: 23.8x and 25.0x, 16: 25.6x and 25.4x, 32: 25.2x and
-  /// 25.3x, 64: 24.8x and 23.4x. Larger: vertices computed that the step never reaches;
-  /// smaller: more waits for the memory.
-  static constexpr int kChunk = 16;
+  /// thread, SSCC's speedup over the traditional query in two runs each (`sscc demo --scene
+  /// spring --strike-speed 7 --steps 17640 --fcl-steps 0`, 20 modes, steps reaching most of
+  /// the spring; `sscc demo --scene dragon --exclude-rest-contacts --fcl-steps 0`, steps
+  /// reaching a few hundred of its vertices): chunks of 1 vertex, spring 23.1x and 23.0x,
+  /// dragon 147.0x and 136.3x; 4: 24.8x and 25.1x, 127.0x and 147.3x; 16: 25.4x and 25.3x,
+  /// 118.9x and 126.2x. Larger: vertices computed that a step never reaches; smaller: more
+  /// waits for the memory.
+  static constexpr int kChunk = 4;
 
   /// O(V r) time and memory (a copy of the basis).
   explicit HierarchyVertices(const SubspaceBvh& bvh);

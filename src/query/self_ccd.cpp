@@ -219,7 +219,7 @@ class StepContext {
         own_x1_(buffers_->x1),
         x0_(shared ? shared->x0.data() : sized(own_x0_)),
         x1_(shared ? shared->x1.data() : sized(own_x1_)),
-        computed_(buffers_->computed),
+        computed_in_(buffers_->computed_in),
         subspace_boxes_(buffers_->subspace_boxes),
         node_sweeps_(buffers_->node_sweeps),
         triangle_sweeps_(buffers_->triangle_sweeps),
@@ -283,7 +283,7 @@ class StepContext {
     own_x1_.assign(x1.begin(), x1.end());
     x0_ = own_x0_.data();
     x1_ = own_x1_.data();
-    std::fill(computed_.begin(), computed_.end(), detail::kVertexKnown);
+    every_vertex_known_ = true;
   }
 
   /// Whether two nodes may hold touching triangles: with refitted boxes, their boxes at both
@@ -461,14 +461,14 @@ class StepContext {
   /// Computes vertex v unless known; on demand (hierarchy_vertices_ given), with the rest of
   /// its chunk in the hierarchy's order (hierarchy_vertices.hpp).
   void ensure_vertex(int v) {
-    if (computed_[v] == detail::kVertexKnown) return;
+    if (every_vertex_known_ || computed_in_[v] == query_number_) return;
     if (!hierarchy_vertices_) return compute_vertex(v, bvh_.model().vertex_block(v));
     const detail::HierarchyVertices& order = *hierarchy_vertices_;
     const int begin = order.rank(v) / detail::HierarchyVertices::kChunk * detail::HierarchyVertices::kChunk;
     const int end = std::min(begin + detail::HierarchyVertices::kChunk, order.count());
     for (int i = begin; i < end; ++i) {
       const int u = order.vertex(i);
-      if (computed_[u] != detail::kVertexKnown) compute_vertex(u, order.rows(i));
+      if (computed_in_[u] != query_number_) compute_vertex(u, order.rows(i));
     }
   }
 
@@ -476,41 +476,32 @@ class StepContext {
   /// previous step's end.
   void compute_vertex(int v, const double* rows) {
     const Eigen::Vector3d& rest = mesh_.vertices()[v];
-    if (computed_[v] == detail::kVertexStartKnown) {
+    if (continues_previous_ && computed_in_[v] == query_number_ - 1) {
+      x0_[v] = x1_[v];
       x1_[v] = SubspaceModel::position(rest, rows, q_hat1_);
       ++stats_.vertex_starts_reused;
     } else {
       SubspaceModel::position_pair(rest, rows, q_hat0_, q_hat1_, x0_[v], x1_[v]);
     }
-    computed_[v] = detail::kVertexKnown;
+    computed_in_[v] = query_number_;
     ++stats_.vertices_computed;
   }
 
-  /// Resets the vertices' states for this step. A step that starts where the buffers' last
-  /// one ended (a simulator's next step, coordinates equal to the bit) starts from the
-  /// positions that one computed at its end: the same values (the same operations on the
-  /// same data), half the work for each vertex both reach. Records this step's end for the
-  /// next, unless the positions are shared or not computed from coordinates.
+  /// Numbers this query on its buffers. A step that starts where the buffers' last query
+  /// ended (a simulator's next step, coordinates equal to the bit) starts from the end
+  /// positions that query computed: the same values (the same operations on the same data),
+  /// half the work for each vertex both reach. Records this step's end for the next, unless
+  /// the positions are shared or not computed from coordinates.
   void start_from_previous_end(bool shared) {
-    const int count = mesh_.vertex_count();
-    std::vector<char>& state = computed_;
-    Eigen::VectorXd& previous_end = buffers_->end_coordinates;
-    const bool continues = !shared && q_hat0_.size() > 0 && previous_end.size() == q_hat0_.size() &&
-                           static_cast<int>(state.size()) == count &&
-                           std::equal(q_hat0_.data(), q_hat0_.data() + q_hat0_.size(), previous_end.data(),
-                                      [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; });
-    if (continues) {
-      for (int v = 0; v < count; ++v) {
-        if (state[v] == detail::kVertexKnown) {
-          x0_[v] = x1_[v];
-          state[v] = detail::kVertexStartKnown;
-        } else {
-          state[v] = detail::kVertexUnknown;
-        }
-      }
-    } else {
-      state.assign(count, shared ? detail::kVertexKnown : detail::kVertexUnknown);
+    if (computed_in_.size() != static_cast<std::size_t>(mesh_.vertex_count())) {
+      computed_in_.assign(mesh_.vertex_count(), 0);
     }
+    query_number_ = ++buffers_->queries;
+    every_vertex_known_ = shared;
+    Eigen::VectorXd& previous_end = buffers_->end_coordinates;
+    continues_previous_ = !shared && q_hat0_.size() > 0 && previous_end.size() == q_hat0_.size() &&
+                          std::equal(q_hat0_.data(), q_hat0_.data() + q_hat0_.size(), previous_end.data(),
+                                     [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; });
     if (shared || q_hat0_.size() == 0) {
       previous_end.resize(0);
     } else {
@@ -602,7 +593,10 @@ class StepContext {
   // without the vectors' indirection).
   Eigen::Vector3d* x0_;
   Eigen::Vector3d* x1_;
-  std::vector<char>& computed_;
+  std::vector<std::uint64_t>& computed_in_;  // computed_in_[v] == query_number_: v known
+  std::uint64_t query_number_ = 0;
+  bool every_vertex_known_ = false;  // shared or given positions
+  bool continues_previous_ = false;  // starts where the buffers' last query ended
   LazyBoxes<Aabb>& subspace_boxes_;
   LazyBoxes<Sweep>& node_sweeps_;
   LazyBoxes<Sweep>& triangle_sweeps_;                      // by position in the BVH's triangle order

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -19,19 +20,16 @@
 
 namespace sscc::detail {
 
-/// What a query knows of a vertex's positions.
-enum VertexState : char {
-  kVertexUnknown = 0,
-  kVertexKnown = 1,       // both ends of the step
-  kVertexStartKnown = 2,  // the start only: the previous step's end
-};
-
 struct StepBuffers {
   std::vector<Eigen::Vector3d> x0, x1;  // the positions, unless the query shares them
-  std::vector<char> computed;           // per vertex: which of its positions are known (VertexState)
-  /// The q_hat1 of the last query whose known positions the buffers hold (empty: none, or
-  /// positions it did not compute from coordinates). A next query starting there
-  /// (q_hat0 bitwise equal: a simulator's next step) takes their x1 as its x0.
+  /// Per vertex, the number of the last query on these buffers that computed both its
+  /// positions (queries numbered from 1 by `queries`: 0 is none). Numbers, not flags, so that
+  /// a query starts without touching every vertex.
+  std::vector<std::uint64_t> computed_in;
+  std::uint64_t queries = 0;
+  /// The q_hat1 of the last query, when it computed its positions from coordinates (empty
+  /// otherwise). A next query starting there (q_hat0 bitwise equal: a simulator's next step)
+  /// takes the last one's end positions as its start.
   Eigen::VectorXd end_coordinates;
   LazyBoxes<Aabb> subspace_boxes;
   LazyBoxes<Sweep> node_sweeps;
