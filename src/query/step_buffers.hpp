@@ -1,8 +1,8 @@
-// The buffers of one self-query context (vertex positions, their flags, the lazy box and cone caches),
-// kept by a detector between queries: a simulator that calls it once per step then allocates
-// none of them per step, nor touches fresh memory (whose first writes fault pages in; on the
-// default demo the queries' buffers made most of the run's page faults). Private to the
-// library.
+// The buffers of one self-query context (vertex positions, the query numbers that know them,
+// the lazy box and cone caches), kept by a detector between queries: a simulator that calls
+// it once per step then allocates none of them per step, nor touches fresh memory (whose
+// first writes fault pages in; on the default demo the queries' buffers made most of the
+// run's page faults). Private to the library.
 #pragma once
 
 #include <Eigen/Core>
@@ -22,7 +22,7 @@ namespace sscc::detail {
 
 struct StepBuffers {
   std::vector<Eigen::Vector3d> x0, x1;  // the positions, unless the query shares them
-  /// Per vertex, the number of the last query on these buffers that computed both its
+  /// Per vertex, the number of the last query on these buffers that knew both its
   /// positions (queries numbered from 1 by `queries`: 0 is none). Numbers, not flags, so that
   /// a query starts without touching every vertex.
   std::vector<std::uint64_t> computed_in;
