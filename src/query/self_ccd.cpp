@@ -27,6 +27,7 @@
 #include "query/patch_radius.hpp"
 #include "query/separating_plane.hpp"
 #include "query/step_buffers.hpp"
+#include "query/step_vertices.hpp"
 #include "query/sweep.hpp"
 #include "query/task_frontier.hpp"
 #include "query/uncertified_work.hpp"
@@ -164,47 +165,24 @@ SelfCcdReport sorted_report(std::vector<TrianglePairContact> pairs, std::vector<
   return report;
 }
 
-/// Every vertex's positions at both ends of a step, computed once for all the threads of a
-/// query (each computes a share) and then only read.
-struct StepPositions {
-  std::vector<Eigen::Vector3d> x0, x1;
-  StepPositions(const SubspaceModel& model, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, int threads)
-      : x0(model.mesh().vertex_count()), x1(model.mesh().vertex_count()) {
-    const int count = model.mesh().vertex_count();
-    // Vertex order within each block streams the basis rows (self_ccd.cpp, StepContext).
-    const int blocks = std::min(threads, std::max(1, count / kVerticesPerBlock));
-    detail::run_tasks(blocks, blocks, [&](int block, int) {
-      const int end = static_cast<int>(static_cast<long>(count) * (block + 1) / blocks);
-      for (int v = static_cast<int>(static_cast<long>(count) * block / blocks); v < end; ++v) {
-        model.position_pair(v, q_hat0, q_hat1, x0[v], x1[v]);
-      }
-    });
-  }
-  /// Fewer vertices per thread than this are computed on fewer threads: opening a parallel
-  /// region costs about as much as a thousand vertices of a 30-mode basis.
-  static constexpr int kVerticesPerBlock = 1024;
-};
-
 /// The static data of the culls a query uses (CullData), each null when it does not.
 struct StepCulls {
   const detail::NodeBoundaries* boundaries = nullptr;  // the normal cones formed per step
   const detail::PatchRadii* radii = nullptr;           // the normal cones bounded from the norm
   const detail::DisplacementBounds* displacement = nullptr;
   const detail::UnconsideredLeafPairs* unconsidered = nullptr;  // leaf pairs skipped with the cones
-  const detail::HierarchyVertices* vertices = nullptr;          // for vertices computed on demand
 };
 
 /// What every query needs per call: the positions computed so far, the feature results,
 /// the contacts and the statistics. Nothing here outlives the call.
 class StepContext {
  public:
-  /// s = max(||q_hat0||, ||q_hat1||). `every_vertex`: compute every vertex up front (the
-  /// traversal will reach nearly all), else on demand; `shared`: every vertex already
-  /// computed there (the caller keeps it alive; every_vertex is then moot). The buffers come
-  /// from `pool` and go back to it with the context.
+  /// s = max(||q_hat0||, ||q_hat1||); empty coordinates for a query on given positions.
+  /// The positions come from `vertices` (shared by the query's contexts, computed up front or
+  /// on demand), the context's caches from `pool`, back to it with the context.
   StepContext(const SubspaceBvh& bvh, const Eigen::VectorXd& q_hat0, const Eigen::VectorXd& q_hat1, double s,
-              const SelfCcdOptions& options, const StepCulls& culls, detail::StepBufferPool& pool, bool every_vertex,
-              StepPositions* shared = nullptr)
+              const SelfCcdOptions& options, const StepCulls& culls, detail::BufferPool<detail::BoxBuffers>& pool,
+              detail::StepVertices& vertices)
       : bvh_(bvh),
         mesh_(bvh.model().mesh()),
         options_(options),
@@ -215,28 +193,18 @@ class StepContext {
         norm0_(q_hat0.stableNorm()),
         norm1_(q_hat1.stableNorm()),
         buffers_(pool.lend()),
-        own_x0_(buffers_->x0),
-        own_x1_(buffers_->x1),
-        x0_(shared ? shared->x0.data() : sized(own_x0_)),
-        x1_(shared ? shared->x1.data() : sized(own_x1_)),
-        computed_in_(buffers_->computed_in),
+        vertices_(vertices),
+        x0_(vertices.x0()),
+        x1_(vertices.x1()),
         subspace_boxes_(buffers_->subspace_boxes),
         node_sweeps_(buffers_->node_sweeps),
         triangle_sweeps_(buffers_->triangle_sweeps),
         triangle_normals_(buffers_->triangle_normals),
         hits_(options.mode, &stats_.kernel_calls),
-        unconsidered_(culls.unconsidered),
-        hierarchy_vertices_(culls.vertices) {
-    start_from_previous_end(shared);
+        unconsidered_(culls.unconsidered) {
     subspace_boxes_.reset(bvh.nodes().size());
     node_sweeps_.reset(bvh.nodes().size());
     triangle_sweeps_.reset(mesh_.triangle_count());
-    // One pass in vertex order streams the basis once, where computing vertices on demand
-    // reads its rows in the hierarchy's order (measured on the 75k-triangle bunny without
-    // certificates: a quarter of the query's time went to those reads).
-    if (every_vertex && !shared && q_hat0.size() > 0) {
-      for (int v = 0; v < mesh_.vertex_count(); ++v) ensure_vertex(v);
-    }
     if (culls.displacement && options.use_displacement_bounds && q_hat0.size() > 0) {
       displacement_ = std::make_unique<detail::StepDisplacement>(*culls.displacement, bvh, q_hat0, q_hat1, separation_);
       if (displacement_->apart_fraction() < kSmallestApartFractionForBounds) displacement_.reset();
@@ -260,30 +228,18 @@ class StepContext {
     // patches the radii cull, whose subspace boxes spare refitting below them.
     const bool large_patches_culled = options.bounds == NodeBounds::kHybrid && radii_from_norm &&
                                       culls.radii->large_patch_coverage_above(s) > kLargestCoverageForLazyRefit;
-    if ((every_vertex || shared) && q_hat0.size() > 0 && options.bounds != NodeBounds::kSubspace &&
+    if (vertices.every_vertex_known() && q_hat0.size() > 0 && options.bounds != NodeBounds::kSubspace &&
         !large_patches_culled) {
       refit_every_sweep();
     }
     if (culls.boundaries && cones && cones_pay() && formed_cones_pay) {
       patch_cull_ = std::make_unique<detail::PatchCull>(
-          bvh, *culls.boundaries, shared ? shared->x0 : own_x0_, shared ? shared->x1 : own_x1_,
+          bvh, *culls.boundaries, vertices.x0_vector(), vertices.x1_vector(),
           [this](int i) {
             for (int v : mesh_.triangles()[bvh_.triangle_order()[i]]) ensure_vertex(v);
           },
           buffers_->patch_cull);
     }
-  }
-
-  /// Given positions at both ends (the traditional query on poses the subspace does not
-  /// hold): every vertex known, boxes refitted.
-  StepContext(const SubspaceBvh& bvh, const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
-              const SelfCcdOptions& options, const StepCulls& culls, detail::StepBufferPool& pool)
-      : StepContext(bvh, Eigen::VectorXd(), Eigen::VectorXd(), 0.0, options, culls, pool, false) {
-    own_x0_.assign(x0.begin(), x0.end());  // into the lent buffers' storage
-    own_x1_.assign(x1.begin(), x1.end());
-    x0_ = own_x0_.data();
-    x1_ = own_x1_.data();
-    every_vertex_known_ = true;
   }
 
   /// Whether two nodes may hold touching triangles: with refitted boxes, their boxes at both
@@ -443,12 +399,6 @@ class StepContext {
     });
   }
 
-  /// x resized to the mesh's vertices, its data.
-  Eigen::Vector3d* sized(std::vector<Eigen::Vector3d>& x) const {
-    x.resize(mesh_.vertex_count());
-    return x.data();
-  }
-
   /// The sweep of the triangle at position i of the BVH's order.
   const Sweep& triangle_sweep(int i) {
     return triangle_sweeps_.get(i, [&](int k) {
@@ -458,56 +408,7 @@ class StepContext {
     });
   }
 
-  /// Computes vertex v unless known; on demand (hierarchy_vertices_ given), with the rest of
-  /// its chunk in the hierarchy's order (hierarchy_vertices.hpp).
-  void ensure_vertex(int v) {
-    if (every_vertex_known_ || computed_in_[v] == query_number_) return;
-    if (!hierarchy_vertices_) return compute_vertex(v, bvh_.model().vertex_block(v));
-    const detail::HierarchyVertices& order = *hierarchy_vertices_;
-    const int begin = order.rank(v) / detail::HierarchyVertices::kChunk * detail::HierarchyVertices::kChunk;
-    const int end = std::min(begin + detail::HierarchyVertices::kChunk, order.count());
-    for (int i = begin; i < end; ++i) {
-      const int u = order.vertex(i);
-      if (computed_in_[u] != query_number_) compute_vertex(u, order.rows(i));
-    }
-  }
-
-  /// Vertex v's positions from its basis block `rows`: the end only when the start is the
-  /// previous step's end.
-  void compute_vertex(int v, const double* rows) {
-    const Eigen::Vector3d& rest = mesh_.vertices()[v];
-    if (continues_previous_ && computed_in_[v] == query_number_ - 1) {
-      x0_[v] = x1_[v];
-      x1_[v] = SubspaceModel::position(rest, rows, q_hat1_);
-      ++stats_.vertex_starts_reused;
-    } else {
-      SubspaceModel::position_pair(rest, rows, q_hat0_, q_hat1_, x0_[v], x1_[v]);
-    }
-    computed_in_[v] = query_number_;
-    ++stats_.vertices_computed;
-  }
-
-  /// Numbers this query on its buffers. A step that starts where the buffers' last query
-  /// ended (a simulator's next step, coordinates equal to the bit) starts from the end
-  /// positions that query computed: the same values (the same operations on the same data),
-  /// half the work for each vertex both reach. Records this step's end for the next, unless
-  /// the positions are shared or not computed from coordinates.
-  void start_from_previous_end(bool shared) {
-    if (computed_in_.size() != static_cast<std::size_t>(mesh_.vertex_count())) {
-      computed_in_.assign(mesh_.vertex_count(), 0);
-    }
-    query_number_ = ++buffers_->queries;
-    every_vertex_known_ = shared;
-    Eigen::VectorXd& previous_end = buffers_->end_coordinates;
-    continues_previous_ = !shared && q_hat0_.size() > 0 && previous_end.size() == q_hat0_.size() &&
-                          std::equal(q_hat0_.data(), q_hat0_.data() + q_hat0_.size(), previous_end.data(),
-                                     [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; });
-    if (shared || q_hat0_.size() == 0) {
-      previous_end.resize(0);
-    } else {
-      previous_end = q_hat1_;
-    }
-  }
+  void ensure_vertex(int v) { vertices_.ensure(v, stats_); }
 
   /// Neither adjacent nor excluded (excluded_pairs.hpp): the pairs a query considers. The
   /// exclusion lookup only for non-adjacent pairs, and an empty set answers at once.
@@ -587,16 +488,11 @@ class StepContext {
   double s_;
   double separation_;  // every cull widened by the kernels' minimum separation
   double norm0_, norm1_;
-  detail::StepBufferPool::Lease buffers_;          // what the members below refer to
-  std::vector<Eigen::Vector3d>&own_x0_, &own_x1_;  // unless the positions are shared
-  // The positions read: the shared ones or the own (raw pointers: the hot loops read them
-  // without the vectors' indirection).
+  detail::BufferPool<detail::BoxBuffers>::Lease buffers_;  // what the caches below refer to
+  detail::StepVertices& vertices_;
+  // The positions (raw pointers: the hot loops read them without an indirection).
   Eigen::Vector3d* x0_;
   Eigen::Vector3d* x1_;
-  std::vector<std::uint64_t>& computed_in_;  // computed_in_[v] == query_number_: v known
-  std::uint64_t query_number_ = 0;
-  bool every_vertex_known_ = false;  // shared or given positions
-  bool continues_previous_ = false;  // starts where the buffers' last query ended
   LazyBoxes<Aabb>& subspace_boxes_;
   LazyBoxes<Sweep>& node_sweeps_;
   LazyBoxes<Sweep>& triangle_sweeps_;                      // by position in the BVH's triangle order
@@ -609,7 +505,6 @@ class StepContext {
   std::unique_ptr<detail::PatchCull> patch_cull_;           // null: no cones formed per step
   std::unique_ptr<detail::StepDisplacement> displacement_;  // null: no displacement cull
   const detail::UnconsideredLeafPairs* unconsidered_;       // null: no leaf pairs skipped
-  const detail::HierarchyVertices* hierarchy_vertices_;     // null: vertices one at a time
   const detail::FirstHitTask* cancel_ = nullptr;
   int task_ = 0;
 };
@@ -913,8 +808,10 @@ class CullData {
     std::call_once(vertices_once_, [&] { vertices_ = std::make_unique<const HierarchyVertices>(*bvh_); });
     return vertices_.get();
   }
-  /// The buffers the queries' contexts lend (step_buffers.hpp).
-  StepBufferPool& buffers() { return buffers_; }
+  /// The buffers the queries lend (step_buffers.hpp): a query's positions, and each of its
+  /// contexts' caches.
+  BufferPool<VertexBuffers>& vertex_buffers() { return vertex_buffers_; }
+  BufferPool<BoxBuffers>& box_buffers() { return box_buffers_; }
 
  private:
   void build_boundaries() {
@@ -940,7 +837,8 @@ class CullData {
   std::unique_ptr<const UncertifiedWork> work_;
   std::unique_ptr<const HierarchyVertices> vertices_;
   std::atomic<bool> built_[kPartCount] = {};
-  StepBufferPool buffers_;
+  BufferPool<VertexBuffers> vertex_buffers_;
+  BufferPool<BoxBuffers> box_buffers_;
 };
 
 }  // namespace detail
@@ -965,10 +863,38 @@ const Certificates* usable(const Certificates* certificates, const SelfCcdOption
   return certificates;
 }
 
-/// Whether a step of norm s is far past the root's certificate, or there are none: the query
-/// then computes every vertex up front and runs on every thread.
+/// Whether a step of norm s is far past the root's certificate, or there are none.
 bool far_past_root(const Certificates* certificates, double s) {
   return !certificates || s > kFarPastCertificateRatio * certificates->node_radius(0);
+}
+
+/// How a query past the root's certificate computes its vertices, on how many threads.
+struct StepPlan {
+  bool every_vertex;  // up front, else on demand
+  int threads;
+};
+
+StepPlan plan_step(detail::CullData& culls, const Certificates* certificates, double s, const SelfCcdOptions& options) {
+  // Without certificates, or far past the root's while they leave most of the hierarchy to
+  // the traversal, it reaches nearly every vertex (neighbouring leaves' boxes always meet):
+  // computed up front, a share per thread, and the traversal's work repays the threads.
+  // Closer to the root's radius, certificates cull most of what the threads would share:
+  // one thread. Measured on the hard spring (`sscc demo --scene spring --strike-speed 7
+  // --steps 17640 --fcl-steps 0 --threads 2`), its lazy steps on both threads, the vertices
+  // shared between them: SSCC 0.146 ms per step against 0.115 on one thread, slower on
+  // every size of step.
+  const bool every_vertex = far_past_root(certificates, s) &&
+                            (!certificates || culls.uncertified_work(s) > kLargestUncertifiedWorkForLazySteps);
+  return {every_vertex, every_vertex ? detail::resolve_threads(options.threads) : 1};
+}
+
+/// The traversal from the root on the calling thread.
+template <typename MakeContext>
+SelfCcdReport serial_traversal(const SubspaceBvh& bvh, const Certificates* certificates, double s,
+                               MakeContext make_context, std::chrono::steady_clock::time_point start) {
+  const std::unique_ptr<StepContext> context = make_context();
+  Traversal<StepContext>(bvh, *context, certificates, s).intra(0);
+  return context->finish(start);
 }
 
 /// The report of a step the root's certificate decides: nothing touches.
@@ -989,14 +915,7 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   const double s = std::max(q_hat0.stableNorm(), q_hat1.stableNorm());
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
-  // Without certificates, or far past the root's, the traversal reaches nearly every vertex
-  // (neighbouring leaves' boxes always meet), and its work repays extra threads. Closer to
-  // the root's radius, certificates cull most of what the threads would share, while each
-  // extra thread builds its own per-query state: one thread (measured on the audio-rate
-  // spring, mean SSCC step 0.354 ms on 2 threads against 0.085 ms on one before this rule).
-  const bool far_past = far_past_root(certificates, s) &&
-                        (!certificates || culls_->uncertified_work(s) > kLargestUncertifiedWorkForLazySteps);
-  const int threads = far_past ? detail::resolve_threads(options.threads) : 1;
+  const StepPlan plan = plan_step(*culls_, certificates, s, options);
   // The displacement cull only without certificates: with them it culls what they cull, a
   // little later, at O(r) per node (measured on the default demo's traversed steps, 2.13 ms
   // per step with it against 2.02 ms without; without certificates 6.0 ms against 9.1 ms).
@@ -1011,22 +930,20 @@ SelfCcdReport SelfCcd::query(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
           : culls_->boundaries(options);
   culls.radii = culls_->radii(options);
   culls.unconsidered = culls_->unconsidered_leaf_pairs(options);
-  if (!far_past) culls.vertices = culls_->hierarchy_vertices();
-  if (threads > 1) {
-    // Far past the root's certificate (threads > 1 only there) nearly every vertex is
-    // reached: computed once, a share per thread, instead of once by every thread's context.
-    StepPositions positions(bvh_->model(), q_hat0, q_hat1, threads);
-    const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, culls, culls_->buffers(), far_past,
-                                           &positions);
-    };
-    SelfCcdReport report = parallel_traversal(*bvh_, certificates, s, options, threads, make_context, start);
-    report.stats.vertices_computed += bvh_->model().mesh().vertex_count();
-    return report;
-  }
-  StepContext context(*bvh_, q_hat0, q_hat1, s, options, culls, culls_->buffers(), far_past);
-  Traversal<StepContext>(*bvh_, context, certificates, s).intra(0);
-  return context.finish(start);
+  // The buffers the last query ended in, when this step starts there (a simulator's next step).
+  const auto positions = culls_->vertex_buffers().lend(
+      [&](const detail::VertexBuffers& b) { return detail::StepVertices::same_bits(b.end_coordinates, q_hat0); });
+  detail::StepVertices vertices(*positions, bvh_->model(), plan.every_vertex ? nullptr : culls_->hierarchy_vertices(),
+                                q_hat0, q_hat1);
+  if (plan.every_vertex) vertices.compute_every_vertex(plan.threads);
+  const auto make_context = [&] {
+    return std::make_unique<StepContext>(*bvh_, q_hat0, q_hat1, s, options, culls, culls_->box_buffers(), vertices);
+  };
+  SelfCcdReport report = plan.threads > 1
+                             ? parallel_traversal(*bvh_, certificates, s, options, plan.threads, make_context, start)
+                             : serial_traversal(*bvh_, certificates, s, make_context, start);
+  detail::add_counts(report.stats, vertices.up_front());
+  return report;
 }
 
 void SelfCcd::prepare(const SelfCcdOptions& options) const {
@@ -1057,7 +974,9 @@ bool SelfCcd::root_certifies(const Eigen::VectorXd& q0, const Eigen::VectorXd& q
 
 int SelfCcd::query_threads(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options) const {
   const Certificates* certificates = usable(certificates_.get(), options);
-  return far_past_root(certificates, step_norm(q0, q1)) ? detail::resolve_threads(options.threads) : 1;
+  const double s = step_norm(q0, q1);
+  if (certificates && s < certificates->node_radius(0)) return 1;
+  return plan_step(*culls_, certificates, s, options).threads;
 }
 
 SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, const std::vector<Eigen::Vector3d>& x1,
@@ -1082,15 +1001,14 @@ SelfCcdReport SelfCcd::query_positions(const std::vector<Eigen::Vector3d>& x0, c
   culls.boundaries = culls_->boundaries(options);
   culls.unconsidered = culls_->unconsidered_leaf_pairs(options);
   const int threads = detail::resolve_threads(options.threads);
-  if (threads > 1) {
-    const auto make_context = [&] {
-      return std::make_unique<StepContext>(*bvh_, x0, x1, refit, culls, culls_->buffers());
-    };
-    return parallel_traversal(*bvh_, nullptr, 0.0, refit, threads, make_context, start);
-  }
-  StepContext context(*bvh_, x0, x1, refit, culls, culls_->buffers());
-  Traversal<StepContext>(*bvh_, context, nullptr, 0.0).intra(0);
-  return context.finish(start);
+  const auto positions = culls_->vertex_buffers().lend();
+  detail::StepVertices given(*positions, x0, x1);
+  const Eigen::VectorXd none;  // no coordinates
+  const auto make_context = [&] {
+    return std::make_unique<StepContext>(*bvh_, none, none, 0.0, refit, culls, culls_->box_buffers(), given);
+  };
+  return threads > 1 ? parallel_traversal(*bvh_, nullptr, 0.0, refit, threads, make_context, start)
+                     : serial_traversal(*bvh_, nullptr, 0.0, make_context, start);
 }
 
 SelfCcdReport SelfCcd::query_discrete(const Eigen::VectorXd& q, const SelfCcdOptions& options) const {
@@ -1111,13 +1029,18 @@ SelfCcdReport SelfCcd::query_exhaustive(const Eigen::VectorXd& q0, const Eigen::
   const Eigen::VectorXd q_hat1 = bvh_->model().scaled_coordinates(q1);
   SelfCcdOptions reference = options;  // no cull: nor the triangle pairs' separating planes
   reference.use_normal_cones = false;
+  const auto positions = culls_->vertex_buffers().lend();
+  detail::StepVertices vertices(*positions, bvh_->model(), nullptr, q_hat0, q_hat1);
+  vertices.compute_every_vertex(1);
   StepContext context(*bvh_, q_hat0, q_hat1, std::max(q_hat0.stableNorm(), q_hat1.stableNorm()), reference, StepCulls{},
-                      culls_->buffers(), true);
+                      culls_->box_buffers(), vertices);
   const int n = bvh_->model().mesh().triangle_count();
   for (int i = 0; i < n && !context.stopped(); ++i) {  // positions in the BVH's order: every pair
     for (int j = i + 1; j < n && !context.stopped(); ++j) context.test_triangle_pair(i, j);
   }
-  return context.finish(start);
+  SelfCcdReport report = context.finish(start);
+  detail::add_counts(report.stats, vertices.up_front());
+  return report;
 }
 
 }  // namespace sscc

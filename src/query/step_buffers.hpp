@@ -1,13 +1,12 @@
-// The buffers of one self-query context (vertex positions, the query numbers that know them,
-// the lazy box and cone caches), kept by a detector between queries: a simulator that calls
-// it once per step then allocates none of them per step, nor touches fresh memory (whose
-// first writes fault pages in; on the default demo the queries' buffers made most of the
-// run's page faults). Private to the library.
+// The buffers of the self queries (the vertices' positions, step_vertices.hpp; each
+// context's lazy box and cone caches), kept by a detector between queries: a simulator that
+// calls it once per step then allocates none of them per step, nor touches fresh memory
+// (whose first writes fault pages in; on the default demo the queries' buffers made most of
+// the run's page faults). Private to the library.
 #pragma once
 
-#include <Eigen/Core>
-
-#include <cstdint>
+#include <algorithm>
+#include <iterator>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -20,17 +19,8 @@
 
 namespace sscc::detail {
 
-struct StepBuffers {
-  std::vector<Eigen::Vector3d> x0, x1;  // the positions, unless the query shares them
-  /// Per vertex, the number of the last query on these buffers that knew both its
-  /// positions (queries numbered from 1 by `queries`: 0 is none). Numbers, not flags, so that
-  /// a query starts without touching every vertex.
-  std::vector<std::uint64_t> computed_in;
-  std::uint64_t queries = 0;
-  /// The q_hat1 of the last query, when it computed its positions from coordinates (empty
-  /// otherwise). A next query starting there (q_hat0 bitwise equal: a simulator's next step)
-  /// takes the last one's end positions as its start.
-  Eigen::VectorXd end_coordinates;
+/// One traversal context's caches.
+struct BoxBuffers {
   LazyBoxes<Aabb> subspace_boxes;
   LazyBoxes<Sweep> node_sweeps;
   LazyBoxes<Sweep> triangle_sweeps;              // by position in the hierarchy's triangle order
@@ -38,45 +28,54 @@ struct StepBuffers {
   PatchCull::Caches patch_cull;                  // the cones formed from the positions
 };
 
-/// The buffers of finished queries, lent to the next ones: as many sets as queries ever ran
+/// The buffers of finished queries, lent to the next ones: as many sets as were ever in use
 /// at once on the detector. Thread-safe (a lock per lease, a few per query).
-class StepBufferPool {
+template <typename Buffers>
+class BufferPool {
  public:
   /// A set of buffers, back to the pool when the lease ends. Their contents are whatever the
   /// last query left: the context resets what it reads.
   class Lease {
    public:
-    Lease(StepBufferPool& pool, std::unique_ptr<StepBuffers> buffers) : pool_(&pool), buffers_(std::move(buffers)) {}
+    Lease(BufferPool& pool, std::unique_ptr<Buffers> buffers) : pool_(&pool), buffers_(std::move(buffers)) {}
     Lease(Lease&&) = default;
     Lease& operator=(Lease&&) = delete;
     ~Lease() {
       if (buffers_) pool_->give_back(std::move(buffers_));
     }
-    StepBuffers& operator*() const { return *buffers_; }
-    StepBuffers* operator->() const { return buffers_.get(); }
+    Buffers& operator*() const { return *buffers_; }
+    Buffers* operator->() const { return buffers_.get(); }
 
    private:
-    StepBufferPool* pool_;
-    std::unique_ptr<StepBuffers> buffers_;
+    BufferPool* pool_;
+    std::unique_ptr<Buffers> buffers_;
   };
 
-  Lease lend() {
-    std::unique_ptr<StepBuffers> buffers;
+  /// The most recently returned set that `preferred` accepts, else the most recently
+  /// returned, else a new one.
+  template <typename Preferred>
+  Lease lend(Preferred preferred) {
+    std::unique_ptr<Buffers> buffers;
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       if (!free_.empty()) {
-        buffers = std::move(free_.back());
-        free_.pop_back();
+        auto chosen = std::find_if(free_.rbegin(), free_.rend(), [&](const auto& b) { return preferred(*b); });
+        if (chosen == free_.rend()) chosen = free_.rbegin();
+        buffers = std::move(*chosen);
+        free_.erase(std::next(chosen).base());
       }
     }
-    if (!buffers) buffers = std::make_unique<StepBuffers>();
+    if (!buffers) buffers = std::make_unique<Buffers>();
     return {*this, std::move(buffers)};
+  }
+  Lease lend() {
+    return lend([](const Buffers&) { return false; });
   }
 
  private:
   /// Called by a lease's destructor, so it must not throw: a set the list has no room for
   /// (out of memory) is freed instead.
-  void give_back(std::unique_ptr<StepBuffers> buffers) noexcept {
+  void give_back(std::unique_ptr<Buffers> buffers) noexcept {
     const std::lock_guard<std::mutex> lock(mutex_);
     try {
       free_.push_back(std::move(buffers));
@@ -85,7 +84,7 @@ class StepBufferPool {
   }
 
   std::mutex mutex_;
-  std::vector<std::unique_ptr<StepBuffers>> free_;
+  std::vector<std::unique_ptr<Buffers>> free_;
 };
 
 }  // namespace sscc::detail

@@ -322,3 +322,47 @@ TEST_CASE("query buffers: chained steps hand their end positions on, lazy to laz
   }
   CHECK(partial > 0);
 }
+
+TEST_CASE(
+    "query buffers: steps far past the certificates, every vertex up front on two threads, start from the previous "
+    "step's end; given positions in between break the chain",
+    "[query]") {
+  const auto sphere = sscc::test::certified_sphere();
+  const sscc::SelfCcd ccd(sphere->bvh, sphere->certificates);
+  const sscc::SelfCcd reference(std::make_shared<const sscc::SubspaceBvh>(ccd.bvh()), nullptr);
+  const double root = sphere->certificates.node_radius(0);
+  const int vertices = sphere->model.mesh().vertex_count();
+  std::mt19937_64 rng(47);
+  // A closed path between about 3 and 5 root radii: past twice the root's (kFarPastCertificateRatio).
+  const Eigen::VectorXd centre = sscc::test::random_scaled_coordinates(rng, 27, 4.0 * root);
+  const Eigen::VectorXd u = sscc::test::random_scaled_coordinates(rng, 27, 0.7 * root);
+  const Eigen::VectorXd w = sscc::test::random_scaled_coordinates(rng, 27, 0.7 * root);
+  const int count = 12;
+  const auto at = [&](int i) {
+    const double angle = 2.0 * M_PI * i / count;
+    return Eigen::VectorXd(centre + std::cos(angle) * u + std::sin(angle) * w);
+  };
+  const sscc::SelfCcdOptions options = on_threads(2);
+  int colliding = 0;
+  for (int k = 0; k < count; ++k) {
+    INFO("step " << k);
+    const Step step = step_of(sphere->model, at(k), at(k + 1));
+    REQUIRE(ccd.query_threads(step.q0, step.q1, options) == 2);
+    const sscc::SelfCcdReport report = ccd.query(step.q0, step.q1, options);
+    const sscc::SelfCcd fresh(std::make_shared<const sscc::SubspaceBvh>(ccd.bvh()),
+                              std::make_shared<const sscc::Certificates>(*ccd.certificates()));
+    require_same_report(report, fresh.query(step.q0, step.q1, on_threads(1)), false);
+    REQUIRE(report.pairs == reference.query_exhaustive(step.q0, step.q1).pairs);
+    // Every vertex computed once, up front, whatever the threads; its start reused from the
+    // second step on, except after the positions query.
+    REQUIRE(report.stats.vertices_computed == vertices);
+    const bool continues = k > 0 && k != count / 2 + 1;
+    REQUIRE(report.stats.vertex_starts_reused == (continues ? vertices : 0));
+    if (k == count / 2) {
+      const sscc::SelfCcdReport given = ccd.query_positions(step.x0, step.x1, options);
+      REQUIRE(given.pairs == report.pairs);
+    }
+    colliding += report.collided() ? 1 : 0;
+  }
+  CHECK(colliding > 0);
+}
