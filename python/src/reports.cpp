@@ -26,6 +26,7 @@ py::dict stats_dict(const SelfCcdStats& s) {
   d["pair_certified"] = s.pair_certified;
   d["plane_culled"] = s.plane_culled;
   d["displacement_culled"] = s.displacement_culled;
+  d["moved_box_culled"] = s.moved_box_culled;
   d["root_certified"] = s.root_certified;
   d["seconds"] = s.seconds;
   return d;
@@ -112,7 +113,8 @@ void bind_self_report(py::module_& m) {
           "stats", [](const SelfReport& r) { return stats_dict(r.stats); },
           "The query's work as a dict: nodes_visited, box_tests, triangle_pairs, kernel_calls, "
           "vertices_computed, vertex_starts_reused (of those, the ones whose start was the previous "
-          "step's end), certified (nodes and sibling pairs culled by a certificate), "
+          "step's end), moved_box_culled (node pairs found apart from boxes moved from the previous "
+          "step's, no vertex computed), certified (nodes and sibling pairs culled by a certificate), "
           "root_certified (the whole step decided by the root's certificate) and seconds.")
       .def("__repr__", [](const SelfReport& r) {
         return "<sscc.SelfCcdReport: " + std::to_string(r.pairs.size()) + " pairs, " +

@@ -23,6 +23,7 @@
 #include "query/displacement_bound.hpp"
 #include "query/feature_hits.hpp"
 #include "query/hierarchy_vertices.hpp"
+#include "query/moved_box.hpp"
 #include "query/patch_cull.hpp"
 #include "query/patch_radius.hpp"
 #include "query/separating_plane.hpp"
@@ -198,6 +199,7 @@ class StepContext {
         x1_(vertices.x1()),
         subspace_boxes_(buffers_->subspace_boxes),
         node_sweeps_(buffers_->node_sweeps),
+        coherent_sweeps_(buffers_->coherent_sweeps),
         triangle_sweeps_(buffers_->triangle_sweeps),
         triangle_normals_(buffers_->triangle_normals),
         hits_(options.mode, &stats_.kernel_calls),
@@ -205,6 +207,14 @@ class StepContext {
     subspace_boxes_.reset(bvh.nodes().size());
     node_sweeps_.reset(bvh.nodes().size());
     triangle_sweeps_.reset(mesh_.triangle_count());
+    // On demand, the node boxes go from step to step (coherent_sweep).
+    coherent_ = !vertices.every_vertex_known() && options.bounds != NodeBounds::kSubspace;
+    if (coherent_) {
+      vertices.track_node_boxes(static_cast<int>(bvh.nodes().size()));
+      coherent_sweeps_.reset(bvh.nodes().size());
+      delta_ = q_hat1 - q_hat0;
+      delta_norm_ = delta_.stableNorm();
+    }
     if (culls.displacement && options.use_displacement_bounds && q_hat0.size() > 0) {
       displacement_ = std::make_unique<detail::StepDisplacement>(*culls.displacement, bvh, q_hat0, q_hat1, separation_);
       if (displacement_->apart_fraction() < kSmallestApartFractionForBounds) displacement_.reset();
@@ -249,6 +259,16 @@ class StepContext {
     if (options_.bounds == NodeBounds::kSubspace) {
       const auto swept = [&](int n) { return bvh_.swept_box(n, q_hat0_, q_hat1_, s_); };
       return overlap(subspace_boxes_.get(a, swept), subspace_boxes_.get(b, swept), separation_);
+    }
+    // The sweeps from the last step's end boxes first: no vertex computed when they part.
+    if (coherent_ && !(node_sweeps_.known(a) && node_sweeps_.known(b))) {
+      const Sweep& sweep_a = coherent_sweep(a);
+      const Sweep& sweep_b = coherent_sweep(b);
+      if (!sweeps_may_touch(sweep_a, sweep_b, separation_)) {
+        // Counted when a moved box decided it (coherent_sweep computes the sweep it cannot move).
+        if (!(node_sweeps_.known(a) && node_sweeps_.known(b))) ++stats_.moved_box_culled;
+        return false;
+      }
     }
     return sweeps_may_touch(node_sweep(a), node_sweep(b), separation_);
   }
@@ -353,10 +373,29 @@ class StepContext {
   const Sweep& node_sweep(int n) {
     return node_sweeps_.get(n, [&](int m) {
       const SubspaceBvh::Node& node = bvh_.nodes()[m];
-      if (options_.bounds == NodeBounds::kHybrid && node.triangle_end - node.triangle_begin > kRefitTriangleLimit) {
-        return Sweep{bvh_.box(m, q_hat0_, norm0_), bvh_.box(m, q_hat1_, norm1_)};
-      }
-      return refitted_sweep(node);
+      const Sweep sweep =
+          options_.bounds == NodeBounds::kHybrid && node.triangle_end - node.triangle_begin > kRefitTriangleLimit
+              ? Sweep{bvh_.box(m, q_hat0_, norm0_), bvh_.box(m, q_hat1_, norm1_)}
+              : refitted_sweep(node);
+      if (coherent_) vertices_.record_end_box(m, sweep.end);
+      return sweep;
+    });
+  }
+
+  /// Node n's sweep when known, else bounded from the box the previous step recorded for its
+  /// end, which holds this step's start positions (step_vertices.hpp): the vertices move by
+  /// at most their deviation from the node's mean modes (SubspaceBvh::SubspaceBound) applied
+  /// to q_hat1 - q_hat0, past the node's mean shift, plus the rounding of the positions at
+  /// both ends; else the node's sweep. A sweep bounded so is recorded as the node's end box.
+  const Sweep& coherent_sweep(int n) {
+    if (node_sweeps_.known(n)) return node_sweeps_.value(n);
+    return coherent_sweeps_.get(n, [&](int m) {
+      const Aabb* start = vertices_.previous_end_box(m);
+      if (!start) return node_sweep(m);
+      const Sweep sweep{*start, detail::moved_box(*start, bvh_.subspace_bound(m), delta_, delta_norm_, s_,
+                                                  bvh_.model().mode_count())};
+      vertices_.record_end_box(m, sweep.end);
+      return sweep;
     });
   }
 
@@ -495,6 +534,10 @@ class StepContext {
   Eigen::Vector3d* x1_;
   LazyBoxes<Aabb>& subspace_boxes_;
   LazyBoxes<Sweep>& node_sweeps_;
+  LazyBoxes<Sweep>& coherent_sweeps_;  // coherent_sweep's bounds
+  bool coherent_ = false;              // node boxes go from step to step
+  Eigen::VectorXd delta_;              // q_hat1 - q_hat0, when coherent_
+  double delta_norm_ = 0.0;
   LazyBoxes<Sweep>& triangle_sweeps_;                      // by position in the BVH's triangle order
   LazyBoxes<detail::BernsteinNormals>& triangle_normals_;  // likewise
   SelfCcdStats stats_;                                     // before hits_, which keeps a pointer into it

@@ -23,6 +23,7 @@ namespace sscc::detail {
 struct BoxBuffers {
   LazyBoxes<Aabb> subspace_boxes;
   LazyBoxes<Sweep> node_sweeps;
+  LazyBoxes<Sweep> coherent_sweeps;              // node sweeps from the previous step's end boxes
   LazyBoxes<Sweep> triangle_sweeps;              // by position in the hierarchy's triangle order
   LazyBoxes<BernsteinNormals> triangle_normals;  // likewise: the separating planes' normals
   PatchCull::Caches patch_cull;                  // the cones formed from the positions

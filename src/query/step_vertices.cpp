@@ -52,6 +52,12 @@ void StepVertices::size_buffers(int vertex_count) {
   known_in_ = buffers_.known_in.data();
 }
 
+void StepVertices::track_node_boxes(int node_count) {
+  if (static_cast<int>(buffers_.end_box_in.size()) == node_count) return;
+  buffers_.end_boxes.assign(node_count, Aabb::empty());
+  buffers_.end_box_in.assign(node_count, 0);
+}
+
 void StepVertices::compute_every_vertex(int threads) {
   if (every_vertex_known_) return;
   const int count = static_cast<int>(buffers_.known_in.size());

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "query/hierarchy_vertices.hpp"
+#include "sscc/geometry/aabb.hpp"
 #include "sscc/model/subspace_model.hpp"
 #include "sscc/query/self_ccd.hpp"
 
@@ -31,6 +32,10 @@ struct VertexBuffers {
   /// The q_hat1 of the last query, when it computed its positions from coordinates (empty
   /// otherwise): where a next query may start.
   Eigen::VectorXd end_coordinates;
+  /// Per node, a box holding its vertices' end positions, and the number of the query that
+  /// recorded it (StepVertices::record_end_box).
+  std::vector<Aabb> end_boxes;
+  std::vector<std::uint64_t> end_box_in;
 };
 
 class StepVertices {
@@ -59,6 +64,21 @@ class StepVertices {
   Eigen::Vector3d* x1() const { return x1_; }
   std::vector<Eigen::Vector3d>& x0_vector() const { return buffers_.x0; }
   std::vector<Eigen::Vector3d>& x1_vector() const { return buffers_.x1; }
+  /// Node boxes handed from step to step, for `node_count` nodes: from then on the query may
+  /// record boxes of its end positions (on one thread), and read those the previous query
+  /// recorded, which hold this query's start positions when it continues that query.
+  void track_node_boxes(int node_count);
+  /// Node n's box recorded by the previous query, when this query starts at its end; null
+  /// otherwise (and once this query recorded n's).
+  const Aabb* previous_end_box(int n) const {
+    return continues_previous_ && buffers_.end_box_in[n] == query_ - 1 ? &buffers_.end_boxes[n] : nullptr;
+  }
+  /// Records a box holding node n's end positions in this query.
+  void record_end_box(int n, const Aabb& box) {
+    buffers_.end_boxes[n] = box;
+    buffers_.end_box_in[n] = query_;
+  }
+
   /// What compute_every_vertex counted.
   const SelfCcdStats& up_front() const { return up_front_; }
 

@@ -66,6 +66,7 @@ inline void add_counts(SelfCcdStats& a, const SelfCcdStats& b) {
   a.cone_radius_culled += b.cone_radius_culled;
   a.plane_culled += b.plane_culled;
   a.displacement_culled += b.displacement_culled;
+  a.moved_box_culled += b.moved_box_culled;
 }
 
 }  // namespace sscc::detail

@@ -168,7 +168,10 @@ struct SelfCcdStats {
   long cone_radius_culled = 0;   ///< of those, culled from the step's norm alone (patch radii)
   long plane_culled = 0;         ///< of triangle_pairs, culled by a separating plane (normal cones' queries)
   long displacement_culled = 0;  ///< nodes and node pairs culled by the displacement bounds
-  bool root_certified = false;   ///< the whole step decided by the root's certificate
+  /// Of the box tests, node pairs found apart from boxes moved from the previous step's (a
+  /// query continuing the last one, as vertex_starts_reused): none of their vertices computed.
+  long moved_box_culled = 0;
+  bool root_certified = false;  ///< the whole step decided by the root's certificate
   double seconds = 0.0;
 };
 
