@@ -21,8 +21,8 @@
 // - So x~_v,k(q_hat1) - x~_v,k(q_hat0) is within shift_k +- P_k, P_k = rate_k D + R ((||m_k||
 //   + rate_k)(D + 2 s) + 2 (|centre_k| + half_k)), for D >= ||delta|| and any R >= gamma_(r+1) +
 //   2u. The code takes R = 4 (r + 4) epsilon = 8 (r + 4) u, several times that: the slack covers
-//   the rounding of s and of D = delta_norm (1 + R) (stableNorm's relative error is under
-//   (r + 2) u).
+//   the rounding of s and of D = delta_norm (1 + R) + (r + 2) denorm_min (stableNorm's error is
+//   under (r + 2) u relative, and a few denorm_min absolute when the norm is subnormal).
 // - The box's two operations per face (start + shift, then -+ pad) round by at most
 //   u (|start_k| + |shift_k|) + u |result| each; pad_k = (P_k + R (max |start_k| + |shift_k|))
 //   (1 + R) covers them (the factor (1 + R) the pad's own share, 2u pad_k, and the rounding
@@ -43,7 +43,7 @@ namespace sscc::detail {
 inline Aabb moved_box(const Aabb& start, const SubspaceBvh::SubspaceBound& bound, const Eigen::VectorXd& delta,
                       double delta_norm, double s, int r) {
   const double relative = 4.0 * (r + 4) * std::numeric_limits<double>::epsilon();
-  const double d = delta_norm * (1.0 + relative);
+  const double d = delta_norm * (1.0 + relative) + (r + 2) * std::numeric_limits<double>::denorm_min();
   Aabb end;
   for (int k = 0; k < 3; ++k) {
     const double shift = bound.mean_modes.row(k).dot(delta);

@@ -73,6 +73,7 @@ void StepVertices::compute_every_vertex(int threads) {
   every_vertex_known_ = true;
 }
 
+/// A chunk is computed whole, so no vertex of it is known when v is not.
 void StepVertices::compute_chunk_of(int v, SelfCcdStats& stats) {
   const HierarchyVertices& order = *order_;
   const int begin = order.rank(v) / HierarchyVertices::kChunk * HierarchyVertices::kChunk;
