@@ -232,8 +232,9 @@ class SelfCcd {
   bool root_certifies(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
 
   /// The threads query(q0, q1, options) runs on: every thread options.threads allows without
-  /// certificates or far past the root's, else one (certificates cull most of what threads
-  /// would share). For schedulers such as Scene::step. Throws as query() does for a bad q.
+  /// certificates, or far past the root's while the certificates leave most of the hierarchy
+  /// to the traversal; else one (certificates cull most of what threads would share). For
+  /// schedulers such as Scene::step. Throws as query() does for a bad q.
   int query_threads(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const SelfCcdOptions& options = {}) const;
 
   /// The traditional query on explicit vertex positions at both ends of the step (each
