@@ -113,8 +113,8 @@ void bind_self_report(py::module_& m) {
           "stats", [](const SelfReport& r) { return stats_dict(r.stats); },
           "The query's work as a dict: nodes_visited, box_tests, triangle_pairs, kernel_calls, "
           "vertices_computed, vertex_starts_reused (of those, the ones whose start was the previous "
-          "step's end), moved_box_culled (node pairs found apart from boxes moved from the previous "
-          "step's, no vertex computed), certified (nodes and sibling pairs culled by a certificate), "
+          "step's end), moved_box_culled (node pairs found apart with a node's box moved from the "
+          "previous step's, its vertices spared), certified (nodes and sibling pairs culled by a certificate), "
           "root_certified (the whole step decided by the root's certificate) and seconds.")
       .def("__repr__", [](const SelfReport& r) {
         return "<sscc.SelfCcdReport: " + std::to_string(r.pairs.size()) + " pairs, " +

@@ -4,8 +4,6 @@
 #include <array>
 #include <atomic>
 #include <chrono>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -174,8 +172,9 @@ struct StepCulls {
   const detail::UnconsideredLeafPairs* unconsidered = nullptr;  // leaf pairs skipped with the cones
 };
 
-/// What every query needs per call: the positions computed so far, the feature results,
-/// the contacts and the statistics. Nothing here outlives the call.
+/// What a query's traversal needs on one thread: the positions (shared by the query's
+/// contexts), its box and cone caches, the feature results, the contacts and the statistics.
+/// Only the node boxes it records for the next step (step_vertices.hpp) outlive the call.
 class StepContext {
  public:
   /// s = max(||q_hat0||, ||q_hat1||); empty coordinates for a query on given positions.
@@ -207,8 +206,11 @@ class StepContext {
     subspace_boxes_.reset(bvh.nodes().size());
     node_sweeps_.reset(bvh.nodes().size());
     triangle_sweeps_.reset(mesh_.triangle_count());
-    // On demand, the node boxes go from step to step (coherent_sweep).
+    // On demand, the node boxes go from step to step (coherent_sweep): recorded by every such
+    // step, moved by a step that continues the last one. Only then is every vertex computed
+    // on this context's thread (plan_step), so the records need no lock.
     coherent_ = !vertices.every_vertex_known() && options.bounds != NodeBounds::kSubspace;
+    move_boxes_ = coherent_ && vertices.continues_previous();
     if (coherent_) {
       vertices.track_node_boxes(static_cast<int>(bvh.nodes().size()));
       coherent_sweeps_.reset(bvh.nodes().size());
@@ -261,7 +263,7 @@ class StepContext {
       return overlap(subspace_boxes_.get(a, swept), subspace_boxes_.get(b, swept), separation_);
     }
     // The sweeps from the last step's end boxes first: no vertex computed when they part.
-    if (coherent_ && !(node_sweeps_.known(a) && node_sweeps_.known(b))) {
+    if (move_boxes_ && !(node_sweeps_.known(a) && node_sweeps_.known(b))) {
       const Sweep& sweep_a = coherent_sweep(a);
       const Sweep& sweep_b = coherent_sweep(b);
       if (!sweeps_may_touch(sweep_a, sweep_b, separation_)) {
@@ -536,6 +538,7 @@ class StepContext {
   LazyBoxes<Sweep>& node_sweeps_;
   LazyBoxes<Sweep>& coherent_sweeps_;  // coherent_sweep's bounds
   bool coherent_ = false;              // node boxes go from step to step
+  bool move_boxes_ = false;            // and this step moves the last one's
   Eigen::VectorXd delta_;              // q_hat1 - q_hat0, when coherent_
   double delta_norm_ = 0.0;
   LazyBoxes<Sweep>& triangle_sweeps_;                      // by position in the BVH's triangle order
@@ -657,7 +660,8 @@ class Traversal {
 /// (task_frontier.hpp), the tasks run on one context per thread (make_context() makes
 /// one; the expansion's own is reused by the first thread), their hits merged in task
 /// order; in the any-hit mode only the first task's that hit. The counters are summed over
-/// the contexts: vertices and boxes computed by several threads count once per thread.
+/// the contexts: boxes computed by several threads count once per thread (the vertices are
+/// computed once, up front: step_vertices.hpp).
 template <typename MakeContext>
 SelfCcdReport parallel_traversal(const SubspaceBvh& bvh, const Certificates* certificates, double s,
                                  const SelfCcdOptions& options, int threads, MakeContext make_context,

@@ -35,7 +35,8 @@ template <typename Buffers>
 class BufferPool {
  public:
   /// A set of buffers, back to the pool when the lease ends. Their contents are whatever the
-  /// last query left: the context resets what it reads.
+  /// last query left: a context resets its caches; the positions and node boxes are kept on
+  /// purpose, for a query that continues the last one (step_vertices.hpp).
   class Lease {
    public:
     Lease(BufferPool& pool, std::unique_ptr<Buffers> buffers) : pool_(&pool), buffers_(std::move(buffers)) {}

@@ -11,7 +11,6 @@
 #include <Eigen/Core>
 
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "query/hierarchy_vertices.hpp"
@@ -51,6 +50,8 @@ class StepVertices {
   /// thread-safe: before the query's threads start.
   void compute_every_vertex(int threads);
   bool every_vertex_known() const { return every_vertex_known_; }
+  /// Whether this query starts where the buffers' last one ended.
+  bool continues_previous() const { return continues_previous_; }
 
   /// Computes vertex v unless known (with its chunk), counting in `stats`. On demand, the
   /// query's one thread only.

@@ -1,4 +1,4 @@
-// A detector lends each query the buffers (positions, their flags, the box and cone caches)
+// A detector lends each query the buffers (positions, their query numbers, the box and cone caches)
 // of a finished one (step_buffers.hpp). Whatever ran before on the detector, a query reports
 // what the same query reports on a fresh detector: steps of very different norms, with and
 // without certificates, every query kind, one thread and several, in turn and from two
@@ -147,7 +147,7 @@ Tally check_reuse(const sscc::SelfCcd& reused, const std::vector<Step>& steps) {
       fresh[i][c] = call.run(fresh_detector(), steps[i]);
       const sscc::SelfCcdReport report = call.run(reused, steps[i]);
       require_same_report(report, fresh[i][c], call.serial);
-      REQUIRE(report.stats.vertex_starts_reused == 0);  // no step here starts where another ends
+      REQUIRE(report.stats.vertex_starts_reused == 0);  // no query here starts where the one before ended
       tally.add(report);
     }
     // A rejected query in between: it throws before borrowing anything.
@@ -172,8 +172,12 @@ Tally check_reuse(const sscc::SelfCcd& reused, const std::vector<Step>& steps) {
   for (std::size_t i = 0; i < steps.size(); ++i) {
     for (int c = 0; c < count; ++c) {
       INFO("concurrent, step " << i << ", " << kinds[c].name);
-      require_same_report(first[i][c], fresh[i][c], kinds[c].serial);
-      require_same_report(second[i][c], fresh[i][c], kinds[c].serial);
+      // Two threads may interleave so that a query starts where the other thread's last one on
+      // the same buffers ended (the torus's steps share keyframes): it then continues it.
+      for (const sscc::SelfCcdReport* report : {&first[i][c], &second[i][c]}) {
+        const bool continued = report->stats.vertex_starts_reused > 0 || report->stats.moved_box_culled > 0;
+        require_same_report(*report, fresh[i][c], kinds[c].serial, continued);
+      }
     }
   }
   return tally;

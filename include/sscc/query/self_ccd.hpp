@@ -159,8 +159,8 @@ struct SelfCcdStats {
   long kernel_calls = 0;
   long vertices_computed = 0;
   /// Of vertices_computed, those whose start position was the previous step's end: a query
-  /// starting where the last one on the detector ended (q0 equal to its q1, bit for bit, as a
-  /// simulator's next step does) computes only their end.
+  /// starting where an earlier one on the detector ended (q0 equal to its q1, bit for bit, as
+  /// a simulator's next step does), its buffers still holding that end, computes only their end.
   long vertex_starts_reused = 0;
   long certified = 0;            ///< nodes, sibling pairs and node pairs below them culled by a certificate
   long pair_certified = 0;       ///< of those, node pairs below sibling pairs (pair certificates)
@@ -168,8 +168,9 @@ struct SelfCcdStats {
   long cone_radius_culled = 0;   ///< of those, culled from the step's norm alone (patch radii)
   long plane_culled = 0;         ///< of triangle_pairs, culled by a separating plane (normal cones' queries)
   long displacement_culled = 0;  ///< nodes and node pairs culled by the displacement bounds
-  /// Of the box tests, node pairs found apart from boxes moved from the previous step's (a
-  /// query continuing the last one, as vertex_starts_reused): none of their vertices computed.
+  /// Of the box tests, node pairs found apart with at least one node's box moved from the
+  /// previous step's (a query continuing an earlier one, as for vertex_starts_reused),
+  /// sparing that node's vertices.
   long moved_box_culled = 0;
   bool root_certified = false;  ///< the whole step decided by the root's certificate
   double seconds = 0.0;
