@@ -421,8 +421,8 @@ class StepContext {
   }
 
   /// Every triangle's and node's sweep, bottom-up in one pass (children follow their parent
-  /// in the node array), once every vertex is known: the same boxes as node_sweep's refits,
-  /// and under NodeBounds::kHybrid refits of the large nodes too, tighter than their subspace
+  /// in the node array), once every vertex is known (no box moved then): the same boxes as
+  /// node_sweep's refits, and under NodeBounds::kHybrid refits of the large nodes too, tighter than their subspace
   /// boxes.
   void refit_every_sweep() {
     const std::vector<SubspaceBvh::Node>& nodes = bvh_.nodes();

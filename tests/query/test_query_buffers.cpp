@@ -83,8 +83,8 @@ std::vector<Call> calls() {
 
 /// `chained`: `reused` continued the detector's last query (its boxes moved from that
 /// query's cull node pairs sooner; its nodes merge their children's moved boxes instead of
-/// refitting down to the triangles, so it may visit more nodes): the same triangle pairs and
-/// kernels, no more vertices computed on these steps.
+/// refitting down to the triangles, so it may visit more nodes and compute vertices a fresh
+/// query does not): the same triangle pairs and kernels.
 void require_same_report(const sscc::SelfCcdReport& reused, const sscc::SelfCcdReport& fresh, bool serial,
                          bool chained = false) {
   REQUIRE(reused.pairs == fresh.pairs);
@@ -96,7 +96,6 @@ void require_same_report(const sscc::SelfCcdReport& reused, const sscc::SelfCcdR
   if (chained) {
     REQUIRE(reused.stats.triangle_pairs == fresh.stats.triangle_pairs);
     REQUIRE(reused.stats.kernel_calls == fresh.stats.kernel_calls);
-    REQUIRE(reused.stats.vertices_computed <= fresh.stats.vertices_computed);
     return;
   }
   REQUIRE(reused.stats.moved_box_culled == 0);
