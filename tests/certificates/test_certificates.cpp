@@ -174,6 +174,38 @@ TEST_CASE("certificates: the culled query reports exactly what the traditional o
   REQUIRE(pair_certified > 0);  // the pair certificates below the sibling pairs took part
 }
 
+TEST_CASE("certificates: pair certificates are walked on steps taken lazily, not on those that compute every vertex",
+          "[certificates]") {
+  const auto m = sscc::test::certified_sphere();
+  const sscc::SelfCcd ccd(m->bvh, m->certificates);
+  sscc::SelfCcdOptions options;
+  options.threads = 2;  // a step computing every vertex runs on both threads, a lazy one on one
+  std::mt19937_64 rng(23);
+  const double radius = m->certificates.node_radius(0);
+  int lazy = 0, every_vertex = 0;
+  long lazy_pair_certified = 0;
+  for (double norm : {1.2 * radius, 1.5 * radius, 2.5 * radius, 4.0 * radius, 0.8, 1.2, 3.0}) {
+    for (int step = 0; step < 4; ++step) {
+      const Eigen::VectorXd q0 = sscc::test::random_scaled_coordinates(rng, 27, norm);
+      const Eigen::VectorXd q1 = sscc::test::random_scaled_coordinates(rng, 27, norm);
+      if (ccd.root_certifies(q0, q1, options)) continue;
+      const sscc::SelfCcdReport report = ccd.query(q0, q1, options);
+      INFO("norm " << norm << " step " << step);
+      REQUIRE(report.pairs == ccd.query_exhaustive(q0, q1).pairs);
+      if (ccd.query_threads(q0, q1, options) > 1) {
+        ++every_vertex;
+        REQUIRE(report.stats.pair_certified == 0);
+      } else {
+        ++lazy;
+        lazy_pair_certified += report.stats.pair_certified;
+      }
+    }
+  }
+  REQUIRE(every_vertex > 0);
+  REQUIRE(lazy > 0);
+  REQUIRE(lazy_pair_certified > 0);
+}
+
 TEST_CASE("certificates: sibling radii are looked up by either order, and only for siblings", "[certificates]") {
   const auto m = sscc::test::certified_sphere();
   const sscc::Certificates& c = m->certificates;
