@@ -577,8 +577,9 @@ struct TraversalCertificates {
 template <typename Context>
 class Traversal {
  public:
-  /// certificates may be null (the traditional traversal); with a frontier, node pairs it
-  /// takes become tasks instead of being descended (task_frontier.hpp).
+  /// certificates.certificates may be null (the traditional traversal), certificates.pairs
+  /// false leaves the pair certificates out; with a frontier, node pairs it takes become tasks
+  /// instead of being descended (task_frontier.hpp).
   Traversal(const SubspaceBvh& bvh, Context& context, TraversalCertificates certificates, double s,
             detail::TaskFrontier* frontier = nullptr)
       : bvh_(bvh),
@@ -682,7 +683,8 @@ class Traversal {
 /// one; the expansion's own is reused by the first thread), their hits merged in task
 /// order; in the any-hit mode only the first task's that hit. The counters are summed over
 /// the contexts: boxes computed by several threads count once per thread (the vertices are
-/// computed once, up front: step_vertices.hpp).
+/// computed once, up front: step_vertices.hpp). The tasks carry their pair certificate; the
+/// steps query() runs on several threads compute every vertex and walk none, so there it is -1.
 template <typename MakeContext>
 SelfCcdReport parallel_traversal(const SubspaceBvh& bvh, TraversalCertificates certificates, double s,
                                  const SelfCcdOptions& options, int threads, MakeContext make_context,
@@ -1090,7 +1092,7 @@ SelfCcdReport SelfCcd::query_discrete(const Eigen::VectorXd& q, const SelfCcdOpt
   const double s = q_hat.stableNorm();
   if (certificates && s < certificates->node_radius(0)) return root_certified_report(start);
   DiscreteContext context(*bvh_, q_hat, s, options);
-  Traversal<DiscreteContext>(*bvh_, context, {certificates}, s).intra(0);
+  Traversal<DiscreteContext>(*bvh_, context, {certificates, true}, s).intra(0);
   return context.finish(start);
 }
 

@@ -182,7 +182,10 @@ TEST_CASE("certificates: pair certificates are walked on steps taken lazily, not
   options.threads = 2;  // a step computing every vertex runs on both threads, a lazy one on one
   std::mt19937_64 rng(23);
   const double radius = m->certificates.node_radius(0);
-  int lazy = 0, every_vertex = 0;
+  double largest_pair_radius = 0.0;
+  for (const sscc::PairCertificate& pair : m->certificates.pair_certificates())
+    largest_pair_radius = std::max(largest_pair_radius, pair.radius);
+  int lazy = 0, every_vertex = 0, every_vertex_below_a_pair_radius = 0;
   long lazy_pair_certified = 0;
   for (double norm : {1.2 * radius, 1.5 * radius, 2.5 * radius, 4.0 * radius, 0.8, 1.2, 3.0}) {
     for (int step = 0; step < 4; ++step) {
@@ -194,6 +197,8 @@ TEST_CASE("certificates: pair certificates are walked on steps taken lazily, not
       REQUIRE(report.pairs == ccd.query_exhaustive(q0, q1).pairs);
       if (ccd.query_threads(q0, q1, options) > 1) {
         ++every_vertex;
+        const double s = std::max(m->model.scaled_coordinates(q0).norm(), m->model.scaled_coordinates(q1).norm());
+        every_vertex_below_a_pair_radius += s < largest_pair_radius;
         REQUIRE(report.stats.pair_certified == 0);
       } else {
         ++lazy;
@@ -202,6 +207,7 @@ TEST_CASE("certificates: pair certificates are walked on steps taken lazily, not
     }
   }
   REQUIRE(every_vertex > 0);
+  REQUIRE(every_vertex_below_a_pair_radius > 0);  // where walking them could have certified a pair
   REQUIRE(lazy > 0);
   REQUIRE(lazy_pair_certified > 0);
 }

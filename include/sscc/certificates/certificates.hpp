@@ -24,12 +24,14 @@
 // the larger node of its pair, as SelfCcd's traversal does) get radii of their own, R_xy: no
 // triangle under x touches a non-adjacent triangle under y while ||q||_M < R_xy. A step whose
 // norm lies above a sibling pair's radius then still skips most of the pairs below it, where
-// the pair's closest triangles are not. Each is the minimum over the pair's children, down to
-// its leaves' triangle pairs, with the same conservative bounds as the radii above (with the
-// looser accuracy kPairEpsilon), resolved up to pair_reach times the sibling pair's radius:
-// the pair's children are stored where they are near at rest (their rest boxes within
-// kNearPairMargin of each other) and their radius is below that reach; a child stored without
-// children of its own holds a radius the traversal tests, then descends uncertified below it.
+// the pair's closest triangles are not (SelfCcd::query walks them on the steps it takes
+// lazily, not on those that compute every vertex, where few hold). Each is the minimum over
+// the pair's children, down to its leaves' triangle pairs, with the same conservative bounds
+// as the radii above (with the looser accuracy kPairEpsilon), resolved up to pair_reach times
+// the sibling pair's radius: the pair's children are stored where they are near at rest
+// (their rest boxes within kNearPairMargin of each other) and their radius is below that
+// reach; a child stored without children of its own holds a radius the traversal tests, then
+// descends uncertified below it.
 //
 // Units: radii are norms of the scaled coordinates, ||q_hat||_2 = ||q||_M.
 #pragma once

@@ -14,8 +14,9 @@
 // adjacent ones: never reported, and their features tested only through the pairs considered.
 //
 // With certificates (SSCC paper, Algorithm 1 made continuous): s = max(||q0||_M, ||q1||_M)
-// is computed once per step; intra(n) returns when s < R_n and inter(a, b) of siblings when
-// s < R_ab (the ellipsoid is convex, so the whole step lies inside it). A step with s below
+// is computed once per step; intra(n) returns when s < R_n, inter(a, b) of siblings when
+// s < R_ab (the ellipsoid is convex, so the whole step lies inside it), and on steps taken
+// lazily a node pair below siblings when s < R_xy (pair certificates). A step with s below
 // the root's radius costs O(r). Normal cones (on by default) skip nodes and pairs of nodes
 // proven free of self-contact over the step (src/query/patch_cull.hpp). Certificates and
 // cones switched off give the traditional query: the same code, so the reports are
@@ -162,8 +163,9 @@ struct SelfCcdStats {
   /// starting where an earlier one on the detector ended (q0 equal to its q1, bit for bit, as
   /// a simulator's next step does), its buffers still holding that end, computes only their end.
   long vertex_starts_reused = 0;
-  long certified = 0;            ///< nodes, sibling pairs and node pairs below them culled by a certificate
-  long pair_certified = 0;       ///< of those, node pairs below sibling pairs (pair certificates)
+  long certified = 0;  ///< nodes, sibling pairs and node pairs below them culled by a certificate
+  /// Of those, node pairs below sibling pairs (pair certificates; 0 on steps computing every vertex).
+  long pair_certified = 0;
   long cone_culled = 0;          ///< nodes and node pairs culled by the normal-cone test
   long cone_radius_culled = 0;   ///< of those, culled from the step's norm alone (patch radii)
   long plane_culled = 0;         ///< of triangle_pairs, culled by a separating plane (normal cones' queries)
