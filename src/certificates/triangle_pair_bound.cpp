@@ -171,8 +171,16 @@ class PairFrame {
 using Piece = Eigen::Matrix3d;
 
 /// The weights of a point of the first (second) triangle in the six-vertex frame.
-Weights6 on_first(const Eigen::Vector3d& w) { return (Weights6() << w, 0.0, 0.0, 0.0).finished(); }
-Weights6 on_second(const Eigen::Vector3d& w) { return (Weights6() << 0.0, 0.0, 0.0, w).finished(); }
+Weights6 on_first(const Eigen::Vector3d& w) {
+  Weights6 weights;
+  weights << w[0], w[1], w[2], 0.0, 0.0, 0.0;
+  return weights;
+}
+Weights6 on_second(const Eigen::Vector3d& w) {
+  Weights6 weights;
+  weights << 0.0, 0.0, 0.0, w[0], w[1], w[2];
+  return weights;
+}
 
 struct Evaluation {
   double lower;
@@ -378,11 +386,12 @@ namespace {
 // as computed), and ||n^T D_k||^2 = n^T S_k n with S_k = D_k D_k^T. The computed
 // projections err by gamma_3 |n|.|column| each and the slacks add 4u |n|.|column|: in the
 // 2-norm over columns at most 8u (||U_a,j||_F + ||U_b,k||_F), far below the allowance; the
-// same holds for the projected means and for the rounding of D itself (u |D| per entry,
-// |D| below twice the largest block). Each entry of S_k is an r-term sum, rounded by at most
-// gamma_r trace(S_k): pad = kSpreadPad trace(S_k) covers that and the quadratic form's
-// rounding for r up to 10^6. Every other rounding (the norms, the sums of squares and the
-// square roots, about (3r + 4)u relative) is far below the growth. The gaps are the same
+// same holds for the projected difference of the means (its subtraction adds u |M_b - M_a|
+// per entry) and for the rounding of D itself (u |D| per entry, |D| below twice the largest
+// block). Each entry of S_k is an r-term sum, rounded by at most gamma_r trace(S_k): pad =
+// kSpreadPad trace(S_k) covers that and the quadratic form's rounding for r up to 10^6.
+// Every other rounding (the norms, the sums of squares and the square roots, about
+// (3r + 4)u relative) is far below the growth. The gaps are the same
 // numbers, and rounding is monotone in the quotient and the sums, so the floor never
 // exceeds the computed 1D bound. Smaller constants could lift it above; larger ones only
 // cut fewer pairs early.
@@ -445,18 +454,38 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b) {
 
 namespace {
 
+// Columns of a mode block the 1D bound projects at a time: its buffers stay on the stack.
+constexpr int kColumnChunk = 32;
+using ChunkProjections = std::array<std::array<double, kColumnChunk>, 3>;
+
+/// For columns first..first + count - 1 of a 3 x r block: n^T column, and 4u |n|^T |column|
+/// (the rounding of the projection), with the operations in the order Eigen's 3-vector dot
+/// product takes them ((x0 + x1) + x2), so the values equal n.dot(column) bit for bit.
+void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eigen::Index first, int count,
+                     const Eigen::Vector3d& n, const Eigen::Vector3d& magnitude,
+                     std::array<double, kColumnChunk>& along, std::array<double, kColumnChunk>& slack) {
+  constexpr double u = std::numeric_limits<double>::epsilon();
+  const double* column = block.data() + 3 * first;
+  for (int c = 0; c < count; ++c, column += 3) {
+    along[c] = (n[0] * column[0] + n[1] * column[1]) + n[2] * column[2];
+    slack[c] = 4.0 * u *
+               ((magnitude[0] * std::fabs(column[0]) + magnitude[1] * std::fabs(column[1])) +
+                magnitude[2] * std::fabs(column[2]));
+  }
+}
+
 /// The floor (header) from the axis and gaps the 1D bound computes.
 double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
                        const std::array<double, 9>& gap, const PositionRounding& rounding) {
   const double blocks = summary_a.largest_block_norm + summary_b.largest_block_norm;
   if (!(blocks < kLargestFloorBlocks)) return 0.0;
   const double modes = static_cast<double>(summary_a.mean_modes.cols());
-  double means = 0.0;
-  for (Eigen::Index c = 0; c < summary_a.mean_modes.cols(); ++c) {
-    const double along = n.dot(summary_b.mean_modes.col(c)) - n.dot(summary_a.mean_modes.col(c));
-    means += along * along;
-  }
-  const double common = std::sqrt(means);
+  // ||n^T (M_b - M_a)||, whole rows at a time (vectorized).
+  const auto& mean_a = summary_a.mean_modes;
+  const auto& mean_b = summary_b.mean_modes;
+  const double common = (n[0] * (mean_b.row(0) - mean_a.row(0)) + n[1] * (mean_b.row(1) - mean_a.row(1)) +
+                         n[2] * (mean_b.row(2) - mean_a.row(2)))
+                            .norm();
   const double allowance = kFloorRateAllowance * blocks + 2.0 * rounding.per_norm +
                            std::sqrt((modes + 16.0) * std::numeric_limits<double>::min());
   std::array<double, 3> spread_a, spread_b;
@@ -492,20 +521,27 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
     if (floor >= cut) return floor;
   }
   // And an upper bound of the squared rate ||n^T (U_b,k - U_a,j)||^2, column by column: each
-  // projected difference grown by the rounding of the two projections it subtracts.
+  // projected difference grown by the rounding of the two projections it subtracts. Columns
+  // go in chunks, each quantity for a whole chunk at once (vectorized), and the squares are
+  // summed in column order: the sums are those of a column-by-column loop, bit for bit.
   const Eigen::Vector3d magnitude = n.cwiseAbs();
-  for (Eigen::Index c = 0; c < r; ++c) {
-    std::array<double, 3> along_a, along_b, slack_a, slack_b;
+  ChunkProjections along_a, along_b, slack_a, slack_b;
+  std::array<double, kColumnChunk> squares;
+  for (Eigen::Index first = 0; first < r; first += kColumnChunk) {
+    const int count = static_cast<int>(std::min<Eigen::Index>(kColumnChunk, r - first));
     for (int i = 0; i < 3; ++i) {
-      along_a[i] = n.dot(a.modes[i].col(c));
-      along_b[i] = n.dot(b.modes[i].col(c));
-      slack_a[i] = 4.0 * u * magnitude.dot(a.modes[i].col(c).cwiseAbs());
-      slack_b[i] = 4.0 * u * magnitude.dot(b.modes[i].col(c).cwiseAbs());
+      project_columns(a.modes[i], first, count, n, magnitude, along_a[i], slack_a[i]);
+      project_columns(b.modes[i], first, count, n, magnitude, along_b[i], slack_b[i]);
     }
     for (int j = 0; j < 3; ++j) {
       for (int k = 0; k < 3; ++k) {
-        const double difference = std::fabs(along_b[k] - along_a[j]) * (1.0 + u) + slack_a[j] + slack_b[k];
-        squared[3 * j + k] += difference * difference;
+        for (int c = 0; c < count; ++c) {
+          const double difference =
+              std::fabs(along_b[k][c] - along_a[j][c]) * (1.0 + u) + slack_a[j][c] + slack_b[k][c];
+          squares[c] = difference * difference;
+        }
+        double& sum = squared[3 * j + k];
+        for (int c = 0; c < count; ++c) sum += squares[c];
       }
     }
   }

@@ -86,10 +86,11 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b);
 /// What the 1D bound reads of one triangle beyond its vertices, computed once per triangle
 /// when many pairs share it (the precomputation): the bounds are the same as without it.
 struct TriangleSummary {
-  double largest_coordinate = 0.0;                      ///< largest |rest coordinate|
-  double largest_row_norm = 0.0;                        ///< largest 2-norm of a row of the three mode blocks
-  double largest_block_norm = 0.0;                      ///< largest Frobenius norm of a mode block
-  Eigen::Matrix<double, 3, Eigen::Dynamic> mean_modes;  ///< the three blocks' mean, as computed
+  double largest_coordinate = 0.0;  ///< largest |rest coordinate|
+  double largest_row_norm = 0.0;    ///< largest 2-norm of a row of the three mode blocks
+  double largest_block_norm = 0.0;  ///< largest Frobenius norm of a mode block
+  /// the three blocks' mean, as computed; row-major: the floor projects whole rows at once
+  Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor> mean_modes;
   /// (block_k - mean_modes)(block_k - mean_modes)^T per vertex k: n^T S_k n is the squared
   /// motion of vertex k along n relative to the mean, per unit ||q_hat||
   std::array<Eigen::Matrix3d, 3> deviation_grams;
