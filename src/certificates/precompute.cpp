@@ -71,16 +71,23 @@ class Precomputation {
         mesh_(bvh.model().mesh()),
         parameters_(parameters),
         global_(global),
+        slot_(mesh_.triangle_count()),
         triangles_(mesh_.triangle_count()),
         summaries_(mesh_.triangle_count()) {
+    // Stored (and allocated) in the hierarchy's order: a node pair's triangles then lie
+    // together in memory, which on large meshes (the bunny's 75k triangles hold about 210 MB of
+    // modes and summaries) saves cache misses in the descents that visit every pair.
     const RowMajorMatrix& basis = bvh.model().scaled_basis();
-    for (int t = 0; t < mesh_.triangle_count(); ++t) {
+    const std::vector<int>& order = bvh.triangle_order();
+    for (int slot = 0; slot < mesh_.triangle_count(); ++slot) {
+      const int t = order[slot];
+      slot_[t] = slot;
       for (int i = 0; i < 3; ++i) {
         const int v = mesh_.triangles()[t][i];
-        triangles_[t].rest[i] = mesh_.vertices()[v];
-        triangles_[t].modes[i] = basis.middleRows<3>(3 * v);
+        triangles_[slot].rest[i] = mesh_.vertices()[v];
+        triangles_[slot].modes[i] = basis.middleRows<3>(3 * v);
       }
-      summaries_[t] = summarize(triangles_[t]);
+      summaries_[slot] = summarize(triangles_[slot]);
     }
   }
 
@@ -95,8 +102,7 @@ class Precomputation {
     long culled = 0;
     for (const auto& [s, t] : pairs) {
       if (!bvh_.model().considers(s, t)) continue;
-      const double estimate =
-          one_dimensional_radius(triangles_[s], triangles_[t], summaries_[s], summaries_[t], minimum.lower);
+      const double estimate = one_dimensional_radius(triangle(s), triangle(t), summary(s), summary(t), minimum.lower);
       if (estimate >= minimum.lower) {
         ++culled;
         continue;
@@ -111,8 +117,8 @@ class Precomputation {
         counters.triangle_pairs_culled += static_cast<long>(ordered.size() - i);
         return;
       }
-      const ModalTriangle& a = triangles_[pair.first];
-      const ModalTriangle& b = triangles_[pair.second];
+      const ModalTriangle& a = triangle(pair.first);
+      const ModalTriangle& b = triangle(pair.second);
       // Projections apart means disjoint; otherwise triangles meeting at rest have radius 0.
       if (estimate == 0.0 &&
           ccd::triangles_intersect(a.rest[0], a.rest[1], a.rest[2], b.rest[0], b.rest[1], b.rest[2])) {
@@ -184,6 +190,9 @@ class Precomputation {
   }
 
  private:
+  const ModalTriangle& triangle(int t) const { return triangles_[slot_[t]]; }
+  const TriangleSummary& summary(int t) const { return summaries_[slot_[t]]; }
+
   Accuracy node_accuracy() const {
     return {parameters_.epsilon, parameters_.max_subdivision_depth, parameters_.max_evaluations_per_pair};
   }
@@ -250,6 +259,7 @@ class Precomputation {
   const TriangleMesh& mesh_;
   const CertificateParameters& parameters_;
   double global_;
+  std::vector<int> slot_;  // mesh triangle -> its position in triangles_ and summaries_
   std::vector<ModalTriangle> triangles_;
   std::vector<TriangleSummary> summaries_;
 };

@@ -526,7 +526,7 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
   // summed in column order: the sums are those of a column-by-column loop, bit for bit.
   const Eigen::Vector3d magnitude = n.cwiseAbs();
   ChunkProjections along_a, along_b, slack_a, slack_b;
-  std::array<double, kColumnChunk> squares;
+  std::array<std::array<double, kColumnChunk>, 9> squares;
   for (Eigen::Index first = 0; first < r; first += kColumnChunk) {
     const int count = static_cast<int>(std::min<Eigen::Index>(kColumnChunk, r - first));
     for (int i = 0; i < 3; ++i) {
@@ -538,11 +538,13 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
         for (int c = 0; c < count; ++c) {
           const double difference =
               std::fabs(along_b[k][c] - along_a[j][c]) * (1.0 + u) + slack_a[j][c] + slack_b[k][c];
-          squares[c] = difference * difference;
+          squares[3 * j + k][c] = difference * difference;
         }
-        double& sum = squared[3 * j + k];
-        for (int c = 0; c < count; ++c) sum += squares[c];
       }
+    }
+    // Nine independent sums, each in column order.
+    for (int c = 0; c < count; ++c) {
+      for (int i = 0; i < 9; ++i) squared[i] += squares[i][c];
     }
   }
   // The ratio is quasi-concave in the barycentric weights (see dual_bound): its minimum

@@ -1,6 +1,7 @@
 // An estimate, from the certificates alone, of how much of the hierarchy a step of norm s
-// leaves to a lazy traversal (which walks the pair certificates): the query computes every vertex up front and runs on
-// every thread only when that is most of the mesh. Private to the library.
+// leaves to a lazy traversal (which walks the pair certificates): the query computes every
+// vertex up front and runs on every thread only when that is most of the mesh. Private to
+// the library.
 #pragma once
 
 #include <vector>
