@@ -523,7 +523,9 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
   // And an upper bound of the squared rate ||n^T (U_b,k - U_a,j)||^2, column by column: each
   // projected difference grown by the rounding of the two projections it subtracts. Columns
   // go in chunks, each quantity for a whole chunk at once (vectorized), and the squares are
-  // summed in column order: the sums are those of a column-by-column loop, bit for bit.
+  // summed in column order: the sums are those of a column-by-column loop, bit for bit, in
+  // builds that do not contract products and sums into FMA (the project's: baseline x86-64;
+  // with -mfma either loop may contract differently, the bound as sound).
   const Eigen::Vector3d magnitude = n.cwiseAbs();
   ChunkProjections along_a, along_b, slack_a, slack_b;
   std::array<std::array<double, kColumnChunk>, 9> squares;
