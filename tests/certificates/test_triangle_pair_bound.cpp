@@ -3,8 +3,10 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
+#include <utility>
 
 #if defined(__GLIBC__)
 #include <fenv.h>
@@ -296,4 +298,43 @@ TEST_CASE("1D floor: never above the 1D bound, and the cut answers as the 1D bou
   // The floor earns its place only when it is close to the 1D bound on most pairs.
   REQUIRE(compared > 1000);
   REQUIRE(informative > compared / 2);
+}
+
+TEST_CASE("1D bound: the values of the column-by-column loop it replaced, across its column chunks",
+          "[certificates][floor]") {
+  // Recorded from the build before the columns went in chunks of 32 (0a4a45a), whose loop
+  // took one column at a time: the precomputation's certificate files stay the same only
+  // while these do. Inputs from a fixed 64-bit LCG (no library distribution), so every
+  // standard library gives the same ones.
+  struct Lcg {
+    std::uint64_t state;
+    double next() {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      return static_cast<double>(state >> 11) * 0x1p-53 * 2.0 - 1.0;
+    }
+  };
+  const std::pair<int, double> recorded[] = {{1, 0x1.97b2c9ebce381p+4},
+                                             {31, 0x1.2687eb203a54ap+2},
+                                             {32, 0x1.dfaf22ad71a73p+1},
+                                             {33, 0x1.3b72498bc5dc7p+2},
+                                             {65, 0x1.8ed1e5629fd57p+1}};
+  for (const auto& [r, value] : recorded) {
+    Lcg lcg{static_cast<std::uint64_t>(r)};
+    ModalTriangle a, b;
+    for (int i = 0; i < 3; ++i) {
+      a.rest[i] = Eigen::Vector3d(lcg.next(), lcg.next(), lcg.next());
+      b.rest[i] = Eigen::Vector3d(3.0 + lcg.next(), lcg.next(), lcg.next());
+      a.modes[i].resize(3, r);
+      b.modes[i].resize(3, r);
+      for (int c = 0; c < r; ++c) {
+        for (int k = 0; k < 3; ++k) {
+          a.modes[i](k, c) = 0.1 * lcg.next();
+          b.modes[i](k, c) = 0.1 * lcg.next();
+        }
+      }
+    }
+    INFO("r " << r);
+    REQUIRE(sscc::one_dimensional_radius(a, b) == value);
+    REQUIRE(sscc::one_dimensional_radius(a, b, sscc::summarize(a), sscc::summarize(b)) == value);
+  }
 }
