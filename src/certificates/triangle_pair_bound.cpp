@@ -391,10 +391,9 @@ namespace {
 // block). Each entry of S_k is an r-term sum, rounded by at most gamma_r trace(S_k): pad =
 // kSpreadPad trace(S_k) covers that and the quadratic form's rounding for r up to 10^6.
 // Every other rounding (the norms, the sums of squares and the square roots, about
-// (3r + 4)u relative) is far below the growth. The gaps are the same
-// numbers, and rounding is monotone in the quotient and the sums, so the floor never
-// exceeds the computed 1D bound. Smaller constants could lift it above; larger ones only
-// cut fewer pairs early.
+// (3r + 4)u relative) is far below the growth. The gaps are the same numbers, and rounding
+// is monotone in the quotient and the sums, so the floor never exceeds the computed 1D
+// bound. Smaller constants could lift it above; larger ones only cut fewer pairs early.
 // Both ends of the range: squares that underflow err by up to 2^-1074 each in absolute
 // terms, which nothing relative covers: sqrt((r + 16) DBL_MIN), 2^26 times sqrt(r 2^-1074),
 // is added to every floor rate (no effect on rates of any normal size). And blocks whose

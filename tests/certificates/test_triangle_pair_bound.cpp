@@ -320,10 +320,18 @@ TEST_CASE("1D bound: the values of the column-by-column loop it replaced, across
                                              {65, 0x1.8ed1e5629fd57p+1}};
   for (const auto& [r, value] : recorded) {
     Lcg lcg{static_cast<std::uint64_t>(r)};
+    // Coordinates drawn z, y, x, one statement each (the order of the recording; a
+    // constructor's arguments may be evaluated in any order).
+    const auto point = [&lcg] {
+      const double z = lcg.next();
+      const double y = lcg.next();
+      const double x = lcg.next();
+      return Eigen::Vector3d(x, y, z);
+    };
     ModalTriangle a, b;
     for (int i = 0; i < 3; ++i) {
-      a.rest[i] = Eigen::Vector3d(lcg.next(), lcg.next(), lcg.next());
-      b.rest[i] = Eigen::Vector3d(3.0 + lcg.next(), lcg.next(), lcg.next());
+      a.rest[i] = point();
+      b.rest[i] = point() + Eigen::Vector3d(3.0, 0.0, 0.0);
       a.modes[i].resize(3, r);
       b.modes[i].resize(3, r);
       for (int c = 0; c < r; ++c) {

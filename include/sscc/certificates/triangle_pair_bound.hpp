@@ -106,10 +106,10 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
 /// Never above one_dimensional_radius(a, b) as computed, at a fraction of its cost (one
 /// projection of a difference per mode against twelve dot products, and nine squares; the
 /// value may vary in its last bits with the buffers' alignment, never above the 1D bound):
-/// each vertex pair's rate
-/// replaced by ||n^T (mean_b - mean_a)|| + sqrt(n^T S_b,k n) + sqrt(n^T S_a,j n), which
-/// bounds it, grown to cover the rounding of both (the constants in the source). A pair
-/// whose floor reaches a running minimum's lower bound has its 1D bound there too.
+/// each vertex pair's rate replaced by ||n^T (mean_b - mean_a)|| + sqrt(n^T S_b,k n) +
+/// sqrt(n^T S_a,j n), which bounds it, grown to cover the rounding of both (the constants in
+/// the source). A pair whose floor reaches a running minimum's lower bound has its 1D bound
+/// there too.
 double one_dimensional_radius_floor(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
                                     const TriangleSummary& summary_b);
 
