@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "common/avx2_clone.hpp"
 #include "sscc/geometry/triangle_distance.hpp"
 
 namespace sscc {
@@ -406,7 +407,7 @@ constexpr double kSpreadPad = 1e-9;
 constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up to 10^6
 
 /// sqrt(n^T S n + pad): a bound of a vertex's motion along n relative to its triangle's mean.
-double spread_along(const Eigen::Matrix3d& deviation_gram, const Eigen::Vector3d& n) {
+[[gnu::always_inline]] inline double spread_along(const Eigen::Matrix3d& deviation_gram, const Eigen::Vector3d& n) {
 #ifdef SSCC_MUTANT_FLOOR_WITHOUT_SPREAD
   return 0.0;
 #endif
@@ -416,7 +417,7 @@ double spread_along(const Eigen::Matrix3d& deviation_gram, const Eigen::Vector3d
 /// The 1D bound's unit axis (the centroids' direction) and its nine vertex-pair gaps, each a
 /// lower bound of n^T (X_b,k - X_a,j) less twice the positions' rounding; false when some
 /// gap is not positive (or the centroids coincide): the bound is then 0.
-bool axis_and_gaps(const ModalTriangle& a, const ModalTriangle& b, const PositionRounding& rounding, Eigen::Vector3d& n,
+[[gnu::always_inline]] inline bool axis_and_gaps(const ModalTriangle& a, const ModalTriangle& b, const PositionRounding& rounding, Eigen::Vector3d& n,
                    std::array<double, 9>& gap) {
   const Eigen::Vector3d axis = (b.rest[0] + b.rest[1] + b.rest[2]) - (a.rest[0] + a.rest[1] + a.rest[2]);
   const double length = axis.stableNorm();
@@ -473,11 +474,14 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
   }
 }
 
-/// The floor (header) from the axis and gaps the 1D bound computes.
-double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
-                       const std::array<double, 9>& gap, const PositionRounding& rounding) {
+/// The floor (header) of each vertex pair's ratio, at 3 j + k, from the axis and gaps the 1D
+/// bound computes, each times the 1D bound's shrink (so never above that vertex pair's ratio
+/// in the 1D bound as computed); false when the floor abstains.
+[[gnu::always_inline]] inline bool vertex_pair_floors(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
+                        const std::array<double, 9>& gap, const PositionRounding& rounding,
+                        std::array<double, 9>& floor) {
   const double blocks = summary_a.largest_block_norm + summary_b.largest_block_norm;
-  if (!(blocks < kLargestFloorBlocks)) return 0.0;
+  if (!(blocks < kLargestFloorBlocks)) return false;
   const double modes = static_cast<double>(summary_a.mean_modes.cols());
   // ||n^T (M_b - M_a)||, whole rows at a time (vectorized).
   const auto& mean_a = summary_a.mean_modes;
@@ -492,19 +496,27 @@ double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& 
     spread_a[i] = spread_along(summary_a.deviation_grams[i], n);
     spread_b[i] = spread_along(summary_b.deviation_grams[i], n);
   }
-  double radius = INFINITY;
   for (int j = 0; j < 3; ++j) {
     for (int k = 0; k < 3; ++k) {
       const double rate = kFloorRateGrowth * (common + spread_b[k] + spread_a[j]) + allowance;
-      if (!(rate > 0.0) || !std::isfinite(rate)) return 0.0;
-      radius = std::min(radius, gap[3 * j + k] / rate);
+      if (!(rate > 0.0) || !std::isfinite(rate)) return false;
+      floor[3 * j + k] = kOneDimensionalShrink * (gap[3 * j + k] / rate);
     }
   }
-  return kOneDimensionalShrink * radius;
+  return true;
+}
+
+/// The floor (header): the least of the vertex pairs' floors, 0 when it abstains.
+double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
+                       const std::array<double, 9>& gap, const PositionRounding& rounding) {
+  std::array<double, 9> floor;
+  if (!vertex_pair_floors(summary_a, summary_b, n, gap, rounding, floor)) return 0.0;
+  return *std::min_element(floor.begin(), floor.end());
 }
 
 }  // namespace
 
+SSCC_AVX2_CLONE
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
                               const TriangleSummary& summary_b, double cut) {
   constexpr double u = std::numeric_limits<double>::epsilon();
@@ -513,11 +525,26 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
   // Per vertex pair (j, k): a lower bound of the gap n^T (X_b,k - X_a,j), the computed dot
   // product less its absolute rounding (the difference and the three products).
   Eigen::Vector3d n;
-  std::array<double, 9> gap, squared{};
+  std::array<double, 9> gap, floor;
   if (!axis_and_gaps(a, b, rounding, n, gap)) return 0.0;
-  if (cut < INFINITY) {
-    const double floor = floor_from_gaps(summary_a, summary_b, n, gap, rounding);
-    if (floor >= cut) return floor;
+  // The vertex pairs whose ratio is computed below, at 3 j + k. With a cut, those whose floor
+  // reaches it are left out: each one's ratio is at least its floor, so at least the cut,
+  // and the least ratio is either below the cut (then among the others) or not needed.
+  std::array<int, 9> needed;
+  int count_needed = 0;
+  double least_floor = INFINITY;  // of the vertex pairs left out
+  const bool floors = cut < INFINITY && vertex_pair_floors(summary_a, summary_b, n, gap, rounding, floor);
+  for (int i = 0; i < 9; ++i) {
+    const bool left_out = floors && floor[i] >= cut;
+    needed[count_needed] = i;
+    count_needed += left_out ? 0 : 1;
+    least_floor = left_out ? std::min(least_floor, floor[i]) : least_floor;
+  }
+  if (count_needed == 0) return least_floor;
+  std::array<bool, 3> needed_a{}, needed_b{};
+  for (int t = 0; t < count_needed; ++t) {
+    needed_a[needed[t] / 3] = true;
+    needed_b[needed[t] % 3] = true;
   }
   // And an upper bound of the squared rate ||n^T (U_b,k - U_a,j)||^2, column by column: each
   // projected difference grown by the rounding of the two projections it subtracts. Columns
@@ -528,35 +555,35 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
   const Eigen::Vector3d magnitude = n.cwiseAbs();
   ChunkProjections along_a, along_b, slack_a, slack_b;
   std::array<std::array<double, kColumnChunk>, 9> squares;
+  std::array<double, 9> squared{};
   for (Eigen::Index first = 0; first < r; first += kColumnChunk) {
     const int count = static_cast<int>(std::min<Eigen::Index>(kColumnChunk, r - first));
     for (int i = 0; i < 3; ++i) {
-      project_columns(a.modes[i], first, count, n, magnitude, along_a[i], slack_a[i]);
-      project_columns(b.modes[i], first, count, n, magnitude, along_b[i], slack_b[i]);
+      if (needed_a[i]) project_columns(a.modes[i], first, count, n, magnitude, along_a[i], slack_a[i]);
+      if (needed_b[i]) project_columns(b.modes[i], first, count, n, magnitude, along_b[i], slack_b[i]);
     }
-    for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) {
-        for (int c = 0; c < count; ++c) {
-          const double difference =
-              std::fabs(along_b[k][c] - along_a[j][c]) * (1.0 + u) + slack_a[j][c] + slack_b[k][c];
-          squares[3 * j + k][c] = difference * difference;
-        }
+    for (int t = 0; t < count_needed; ++t) {
+      const int j = needed[t] / 3, k = needed[t] % 3;
+      for (int c = 0; c < count; ++c) {
+        const double difference =
+            std::fabs(along_b[k][c] - along_a[j][c]) * (1.0 + u) + slack_a[j][c] + slack_b[k][c];
+        squares[t][c] = difference * difference;
       }
     }
-    // Nine independent sums, each in column order.
+    // Independent sums, each in column order.
     for (int c = 0; c < count; ++c) {
-      for (int i = 0; i < 9; ++i) squared[i] += squares[i][c];
+      for (int t = 0; t < count_needed; ++t) squared[t] += squares[t][c];
     }
   }
   // The ratio is quasi-concave in the barycentric weights (see dual_bound): its minimum
   // over the two triangles is at a vertex pair. The last factor covers the rounding of the
   // sums, the square root and the division.
   double radius = INFINITY;
-  for (int i = 0; i < 9; ++i) {
-    const double rate = std::sqrt(squared[i]) + 2.0 * rounding.per_norm;
-    if (rate > 0.0) radius = std::min(radius, gap[i] / rate);
+  for (int t = 0; t < count_needed; ++t) {
+    const double rate = std::sqrt(squared[t]) + 2.0 * rounding.per_norm;
+    if (rate > 0.0) radius = std::min(radius, gap[needed[t]] / rate);
   }
-  return kOneDimensionalShrink * radius;
+  return std::min(kOneDimensionalShrink * radius, least_floor);
 }
 
 double one_dimensional_radius_floor(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,

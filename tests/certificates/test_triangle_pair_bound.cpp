@@ -269,7 +269,8 @@ TEST_CASE("1D floor: never above the 1D bound, and the cut answers as the 1D bou
       const double answer = sscc::one_dimensional_radius(ta, tb, sa, sb, cut);
       REQUIRE(answer <= bound);
       REQUIRE((answer >= cut) == (bound >= cut));
-      if (!(floor >= cut)) REQUIRE(answer == bound);
+      if (!(bound >= cut)) REQUIRE(answer == bound);
+      if (floor >= cut && floor > 0.0) REQUIRE(answer == floor);  // 0: the floor abstains
     }
     if (bound > 0.0) {
       ++compared;

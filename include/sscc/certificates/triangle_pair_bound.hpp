@@ -97,9 +97,10 @@ struct TriangleSummary {
 };
 TriangleSummary summarize(const ModalTriangle& t);
 
-/// one_dimensional_radius(a, b) from the triangles' summaries: the same value; or, when
-/// one_dimensional_radius_floor(a, b, ...) reaches `cut`, that floor (at least `cut` and
-/// never above the 1D bound, so a caller comparing with `cut` decides the same).
+/// one_dimensional_radius(a, b) from the triangles' summaries: the same value where it lies
+/// below `cut`; where it does not, a value at least `cut` and never above it (a caller
+/// comparing with `cut` decides the same). The ratio of a vertex pair whose floor (below)
+/// reaches the cut is not computed: when every one's does, that is the floor.
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
                               const TriangleSummary& summary_b, double cut = INFINITY);
 
