@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -98,7 +99,9 @@ class Precomputation {
   /// before sorting, and the pairs bounded, their order and the minimum stay the same.
   void add_triangle_pairs(const std::vector<std::pair<int, int>>& pairs, RunningMinimum& minimum, Counters& counters,
                           const Accuracy& accuracy) const {
-    std::vector<std::pair<double, std::pair<int, int>>> ordered;
+    // Reused by each thread's calls (millions of them), as the pairs' lists below.
+    thread_local std::vector<std::pair<double, std::pair<int, int>>> ordered;
+    ordered.clear();
     long culled = 0;
     for (const auto& [s, t] : pairs) {
       if (!bvh_.model().considers(s, t)) continue;
@@ -155,12 +158,17 @@ class Precomputation {
     const bool split_a = detail::splits_first(na, nb);
     const SubspaceBvh::Node& split = split_a ? na : nb;
     const int other = split_a ? b : a;
-    std::vector<std::pair<double, int>> children;
-    for (int c = split.first_child; c < split.first_child + split.child_count; ++c) {
-      children.push_back({box_box_radius(bvh_, c, other), c});
+    std::array<std::pair<double, int>, kBranchingFactor> children;
+    for (int i = 0; i < split.child_count; ++i) {
+      const int c = split.first_child + i;
+      children[i] = {box_box_radius(bvh_, c, other), c};
     }
-    std::sort(children.begin(), children.end());
-    for (const auto& [estimate, c] : children) {
+    // In order of their box bound (an insertion sort: at most kBranchingFactor of them).
+    for (int i = 1; i < split.child_count; ++i) {
+      for (int j = i; j > 0 && children[j] < children[j - 1]; --j) std::swap(children[j], children[j - 1]);
+    }
+    for (int i = 0; i < split.child_count; ++i) {
+      const auto& [estimate, c] = children[i];
       if (estimate >= minimum.lower) {
         ++counters.node_pairs_culled;
         continue;
@@ -201,8 +209,12 @@ class Precomputation {
             std::min(parameters_.max_evaluations_per_pair, kPairEvaluations)};
   }
 
-  std::vector<std::pair<int, int>> leaf_pair_triangles(const SubspaceBvh::Node& na, const SubspaceBvh::Node& nb) const {
-    std::vector<std::pair<int, int>> pairs;
+  /// The pairs of triangles of leaves na and nb, in a list each thread reuses (valid until
+  /// its next call).
+  const std::vector<std::pair<int, int>>& leaf_pair_triangles(const SubspaceBvh::Node& na,
+                                                              const SubspaceBvh::Node& nb) const {
+    thread_local std::vector<std::pair<int, int>> pairs;
+    pairs.clear();
     const std::vector<int>& order = bvh_.triangle_order();
     for (int i = na.triangle_begin; i < na.triangle_end; ++i) {
       for (int j = nb.triangle_begin; j < nb.triangle_end; ++j) pairs.push_back({order[i], order[j]});

@@ -95,9 +95,15 @@ class PairFrame {
       rest_[i] = a.rest[i] - a.rest[0];
       rest_[3 + i] = b.rest[i] - a.rest[0];
     }
-    // Coefficient-wise product: for an 18 x r by r x 18 product, packing for a blocked
-    // kernel costs more than it saves.
-    gram_.noalias() = stacked.lazyProduct(stacked.transpose());
+    // Symmetric: each entry below the diagonal is its mirror's sum, the same products in the
+    // same order (column by column, as Eigen's coefficient-wise product sums them).
+    for (int j = 0; j < 18; ++j) {
+      for (int i = 0; i <= j; ++i) gram_(i, j) = r > 0 ? stacked(i, 0) * stacked(j, 0) : 0.0;
+      for (int k = 1; k < r; ++k) {
+        for (int i = 0; i <= j; ++i) gram_(i, j) += stacked(i, k) * stacked(j, k);
+      }
+      for (int i = 0; i < j; ++i) gram_(j, i) = gram_(i, j);
+    }
     double largest = 0.0;
     for (int i = 0; i < 6; ++i) largest = std::max(largest, gram_.block<3, 3>(3 * i, 3 * i).trace());
     rounding_ = gram_rounding_pad(r) * largest;
@@ -350,7 +356,8 @@ TrianglePairRadius triangle_pair_radius(const ModalTriangle& a, const ModalTrian
   // refined. The open pairs cover both triangles, so the smallest open lower bound is a
   // lower bound. A refinement splits the larger piece (4 new pairs).
   const auto later = [](const OpenPair& x, const OpenPair& y) { return x.bound.lower > y.bound.lower; };
-  std::vector<OpenPair> open;
+  thread_local std::vector<OpenPair> open;  // reused: the precomputation makes millions of calls
+  open.clear();
   open.push_back({whole, whole, root, 0});
   while (true) {
     std::pop_heap(open.begin(), open.end(), later);
