@@ -96,10 +96,10 @@ class PairFrame {
       rest_[3 + i] = b.rest[i] - a.rest[0];
     }
     // Symmetric: each entry below the diagonal is its mirror's sum, the same products in the
-    // same order (column by column, as Eigen's coefficient-wise product sums them).
+    // same order (from +0, column by column, as Eigen's coefficient-wise product sums them).
     for (int j = 0; j < 18; ++j) {
-      for (int i = 0; i <= j; ++i) gram_(i, j) = r > 0 ? stacked(i, 0) * stacked(j, 0) : 0.0;
-      for (int k = 1; k < r; ++k) {
+      for (int i = 0; i <= j; ++i) gram_(i, j) = 0.0;
+      for (int k = 0; k < r; ++k) {
         for (int i = 0; i <= j; ++i) gram_(i, j) += stacked(i, k) * stacked(j, k);
       }
       for (int i = 0; i < j; ++i) gram_(j, i) = gram_(i, j);
@@ -400,14 +400,15 @@ namespace {
 // kSpreadPad trace(S_k) covers that and the quadratic form's rounding for r up to 10^6.
 // Every other rounding (the norms, the sums of squares and the square roots, about
 // (3r + 4)u relative) is far below the growth. The gaps are the same numbers, and rounding
-// is monotone in the quotient and the sums, so the floor never exceeds the computed 1D
-// bound. Smaller constants could lift it above; larger ones only cut fewer pairs early.
+// is monotone in the quotient and the sums, so each vertex pair's floor never exceeds its
+// ratio in the computed 1D bound (nor the least floor the bound). Smaller constants could lift
+// it above; larger ones only cut fewer pairs early.
 // Both ends of the range: squares that underflow err by up to 2^-1074 each in absolute
 // terms, which nothing relative covers: sqrt((r + 16) DBL_MIN), 2^26 times sqrt(r 2^-1074),
 // is added to every floor rate (no effect on rates of any normal size). And blocks whose
 // sum reaches kLargestFloorBlocks could overflow the 1D bound's sums of squares (to a rate
-// of infinity, a bound of 0) before the floor's: there the floor abstains (returns 0), as
-// it does on any rate that is not a positive number.
+// of infinity, a bound of 0) before the floor's: there the floor abstains (it is 0, and the
+// 1D bound leaves no vertex pair out), as it does on any rate that is not a positive number.
 constexpr double kFloorRateGrowth = 1.0 + 1e-9;
 constexpr double kFloorRateAllowance = 1e-12;
 constexpr double kSpreadPad = 1e-9;
@@ -424,8 +425,9 @@ constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up
 /// The 1D bound's unit axis (the centroids' direction) and its nine vertex-pair gaps, each a
 /// lower bound of n^T (X_b,k - X_a,j) less twice the positions' rounding; false when some
 /// gap is not positive (or the centroids coincide): the bound is then 0.
-[[gnu::always_inline]] inline bool axis_and_gaps(const ModalTriangle& a, const ModalTriangle& b, const PositionRounding& rounding, Eigen::Vector3d& n,
-                   std::array<double, 9>& gap) {
+[[gnu::always_inline]] inline bool axis_and_gaps(const ModalTriangle& a, const ModalTriangle& b,
+                                                 const PositionRounding& rounding, Eigen::Vector3d& n,
+                                                 std::array<double, 9>& gap) {
   const Eigen::Vector3d axis = (b.rest[0] + b.rest[1] + b.rest[2]) - (a.rest[0] + a.rest[1] + a.rest[2]);
   const double length = axis.stableNorm();
   if (!(length > 0.0)) return false;
@@ -484,9 +486,10 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
 /// The floor (header) of each vertex pair's ratio, at 3 j + k, from the axis and gaps the 1D
 /// bound computes, each times the 1D bound's shrink (so never above that vertex pair's ratio
 /// in the 1D bound as computed); false when the floor abstains.
-[[gnu::always_inline]] inline bool vertex_pair_floors(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
-                        const std::array<double, 9>& gap, const PositionRounding& rounding,
-                        std::array<double, 9>& floor) {
+[[gnu::always_inline]] inline bool vertex_pair_floors(const TriangleSummary& summary_a,
+                                                      const TriangleSummary& summary_b, const Eigen::Vector3d& n,
+                                                      const std::array<double, 9>& gap,
+                                                      const PositionRounding& rounding, std::array<double, 9>& floor) {
   const double blocks = summary_a.largest_block_norm + summary_b.largest_block_norm;
   if (!(blocks < kLargestFloorBlocks)) return false;
   const double modes = static_cast<double>(summary_a.mean_modes.cols());
@@ -572,8 +575,7 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
     for (int t = 0; t < count_needed; ++t) {
       const int j = needed[t] / 3, k = needed[t] % 3;
       for (int c = 0; c < count; ++c) {
-        const double difference =
-            std::fabs(along_b[k][c] - along_a[j][c]) * (1.0 + u) + slack_a[j][c] + slack_b[k][c];
+        const double difference = std::fabs(along_b[k][c] - along_a[j][c]) * (1.0 + u) + slack_a[j][c] + slack_b[k][c];
         squares[t][c] = difference * difference;
       }
     }
