@@ -34,7 +34,7 @@ void report(const SubspaceBvh& bvh, const Certificates& certificates, bool exclu
   progress << "precompute: " << s.threads << " threads, node pairs visited " << s.node_pairs_visited << " (culled "
            << s.node_pairs_culled << "), triangle pairs bounded " << s.triangle_pairs_bounded << " (culled by 1D "
            << s.triangle_pairs_culled << "), constant-mode evaluations " << s.constant_mode_evaluations
-           << ", global radius " << certificates.global_radius() << '\n';
+           << ", pair-tree tasks " << s.pair_tree_tasks << ", global radius " << certificates.global_radius() << '\n';
   if (certificates.node_radius(0) == 0.0) {
     progress << "precompute: warning: root radius 0: non-adjacent triangles touch or intersect at rest (or no "
                 "motion is needed to bring them together); the root certifies nothing"

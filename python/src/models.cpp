@@ -32,6 +32,7 @@ py::dict precompute_stats_dict(const PrecomputeStats& s) {
   d["triangle_pairs_culled"] = s.triangle_pairs_culled;
   d["triangle_pairs_bounded"] = s.triangle_pairs_bounded;
   d["constant_mode_evaluations"] = s.constant_mode_evaluations;
+  d["pair_tree_tasks"] = s.pair_tree_tasks;
   d["threads"] = s.threads;
   d["seconds"] = s.seconds;
   return d;

@@ -45,7 +45,7 @@ struct RunningMinimum {
 
 struct Counters {
   long node_pairs_visited = 0, node_pairs_culled = 0, triangle_pairs_culled = 0, triangle_pairs_bounded = 0,
-       evaluations = 0, pair_certificates = 0;
+       evaluations = 0, pair_certificates = 0, pair_tree_tasks = 0;
   void add(const Counters& o) {
     node_pairs_visited += o.node_pairs_visited;
     node_pairs_culled += o.node_pairs_culled;
@@ -53,6 +53,7 @@ struct Counters {
     triangle_pairs_bounded += o.triangle_pairs_bounded;
     evaluations += o.evaluations;
     pair_certificates += o.pair_certificates;
+    pair_tree_tasks += o.pair_tree_tasks;
   }
 };
 
@@ -178,10 +179,29 @@ class Precomputation {
   }
 
   /// The pair certificates below sibling pair (a, b), resolved up to `reach`: entry 0 is the
-  /// pair itself (its radius set by the caller), then the children blocks, depth first.
+  /// pair itself (its radius set by the caller), then the children blocks, depth first. The
+  /// pairs are laid out first; the radii of the far and leaf pairs (independent descents, each
+  /// from `reach`) are computed next, the large ones as OpenMP tasks that idle threads take up;
+  /// then the near pairs' radii and the blocks kept. The result does not depend on the order.
   std::vector<PairCertificate> pair_tree(int a, int b, double reach, Counters& counters) const {
+    std::vector<PairShape> shape(1, PairShape{a, b});
+    lay_out_pair_children(0, reach, shape, counters);
+    std::vector<Counters> job_counters(shape.size());
+    for (std::size_t i = 0; i < shape.size(); ++i) {
+      if (shape[i].job == PairJob::kNone) continue;
+      if (triangle_pairs_below(shape[i]) < kSmallestPairTask) {
+        run_pair_job(shape[i], reach, job_counters[i]);
+        continue;
+      }
+      ++counters.pair_tree_tasks;
+#pragma omp task default(none) firstprivate(i, reach) shared(shape, job_counters)
+      run_pair_job(shape[i], reach, job_counters[i]);
+    }
+#pragma omp taskwait
+    for (const Counters& c : job_counters) counters.add(c);
+    resolve_near_radius(0, reach, shape);
     std::vector<PairCertificate> tree(1);
-    add_pair_children(a, b, reach, tree, 0, counters);
+    emit_pair_children(shape, 0, reach, tree, 0);
     counters.pair_certificates += static_cast<long>(tree.size());
     return tree;
   }
@@ -222,51 +242,99 @@ class Precomputation {
     return pairs;
   }
 
-  /// Gives entry `self` of `tree`, the pair (x, y), its block of child pairs (the larger node
-  /// split, as the traversal does), and returns the pair's radius resolved up to `reach`:
-  /// near children recursively (their blocks dropped when they reach it), far ones by the
-  /// box bound or the running minimum from `reach`; leaf pairs by their triangle pairs.
-  double add_pair_children(int x, int y, double reach, std::vector<PairCertificate>& tree, std::size_t self,
-                           Counters& counters) const {
+  /// How a pair tree's entry gets its radius: from its children (near pairs), its box bound
+  /// (far pairs the bound puts at the reach or beyond), or a descent of its own from the reach.
+  enum class PairJob { kNone, kLeafPairs, kNodePair };
+  struct PairShape {
+    int x, y;
+    int first_child = -1, child_count = 0;  // a near inner pair's block in the shape
+    PairJob job = PairJob::kNone;
+    double radius = 0.0;  // up to the reach
+  };
+  // Pair tree descents below this many triangle pairs run where they are met. A task costs
+  // about a microsecond to hand over, 512 screened pairs 50-100 us: larger, fewer tasks to
+  // even out the end of a level; smaller, more overhead for work that is already spread.
+  static constexpr long kSmallestPairTask = 512;
+
+  long triangle_pairs_below(const PairShape& entry) const {
+    const SubspaceBvh::Node& nx = bvh_.nodes()[entry.x];
+    const SubspaceBvh::Node& ny = bvh_.nodes()[entry.y];
+    return static_cast<long>(nx.triangle_end - nx.triangle_begin) * (ny.triangle_end - ny.triangle_begin);
+  }
+
+  /// Lays out entry `self`, the pair (x, y): its block of child pairs (the larger node split,
+  /// as the traversal does), near children recursively; far ones get their box bound, and a
+  /// descent when it lies below `reach`; a leaf pair its triangle pairs.
+  void lay_out_pair_children(std::size_t self, double reach, std::vector<PairShape>& shape, Counters& counters) const {
     ++counters.node_pairs_visited;
+    const int x = shape[self].x, y = shape[self].y;
     const SubspaceBvh::Node& nx = bvh_.nodes()[x];
     const SubspaceBvh::Node& ny = bvh_.nodes()[y];
-    const Accuracy accuracy = pair_accuracy();
     if (nx.is_leaf() && ny.is_leaf()) {
-      RunningMinimum minimum{reach, reach};
-      add_triangle_pairs(leaf_pair_triangles(nx, ny), minimum, counters, accuracy);
-      return minimum.lower;
+      shape[self].job = PairJob::kLeafPairs;
+      return;
     }
     const bool split_x = detail::splits_first(nx, ny);
     const SubspaceBvh::Node& split = split_x ? nx : ny;
-    const std::size_t block = tree.size();
-    tree.resize(block + static_cast<std::size_t>(split.child_count));
-    tree[self].first_child = static_cast<std::int32_t>(block);
-    double radius = reach;
+    const std::size_t block = shape.size();
+    shape[self].first_child = static_cast<int>(block);
+    shape[self].child_count = split.child_count;
     for (int i = 0; i < split.child_count; ++i) {
       const int c = split.first_child + i;
-      const int a = split_x ? c : x, b = split_x ? y : c;
-      double child;
-      if (detail::near_at_rest(bvh_, a, b)) {
-        const std::size_t mark = tree.size();
-        child = add_pair_children(a, b, reach, tree, block + static_cast<std::size_t>(i), counters);
-        if (child >= reach) {  // certified up to the reach: its children would never be tested
-          tree.resize(mark);
-          tree[block + static_cast<std::size_t>(i)].first_child = -1;
-        }
-      } else {
-        child = box_box_radius(bvh_, a, b);
-        if (child < reach) {
-          RunningMinimum minimum{reach, reach};
-          add_node_pair(a, b, minimum, counters, accuracy);
-          child = minimum.lower;
-        }
-      }
-      tree[block + static_cast<std::size_t>(i)].radius = std::min(child, global_);
-      radius = std::min(radius, child);
+      shape.push_back(PairShape{split_x ? c : x, split_x ? y : c});
     }
-    return radius;
+    for (std::size_t entry = block; entry < block + static_cast<std::size_t>(split.child_count); ++entry) {
+      const int a = shape[entry].x, b = shape[entry].y;
+      if (detail::near_at_rest(bvh_, a, b)) {
+        lay_out_pair_children(entry, reach, shape, counters);
+      } else {
+        shape[entry].radius = box_box_radius(bvh_, a, b);
+        if (shape[entry].radius < reach) shape[entry].job = PairJob::kNodePair;
+      }
+    }
   }
+
+  /// The radius of a far or leaf pair up to `reach`: its pairs folded into a minimum from it.
+  void run_pair_job(PairShape& entry, double reach, Counters& counters) const {
+    RunningMinimum minimum{reach, reach};
+    if (entry.job == PairJob::kLeafPairs) {
+      add_triangle_pairs(leaf_pair_triangles(bvh_.nodes()[entry.x], bvh_.nodes()[entry.y]), minimum, counters,
+                         pair_accuracy());
+    } else {
+      add_node_pair(entry.x, entry.y, minimum, counters, pair_accuracy());
+    }
+    entry.radius = minimum.lower;
+  }
+
+  /// A near inner pair's radius up to `reach`: the least of its children's (theirs first).
+  double resolve_near_radius(std::size_t self, double reach, std::vector<PairShape>& shape) const {
+    PairShape& entry = shape[self];
+    if (entry.child_count == 0) return entry.radius;
+    double radius = reach;
+    for (int i = 0; i < entry.child_count; ++i) {
+      radius = std::min(radius, resolve_near_radius(static_cast<std::size_t>(entry.first_child + i), reach, shape));
+    }
+    return entry.radius = radius;
+  }
+
+  /// Gives entry `self` of `tree` the block of shape entry `from`'s children, with their radii,
+  /// depth first; a near child's block is dropped when it is certified up to the reach (its
+  /// children would never be tested).
+  void emit_pair_children(const std::vector<PairShape>& shape, std::size_t from, double reach,
+                          std::vector<PairCertificate>& tree, std::size_t self) const {
+    const PairShape& entry = shape[from];
+    if (entry.child_count == 0) return;
+    const std::size_t block = tree.size();
+    tree.resize(block + static_cast<std::size_t>(entry.child_count));
+    tree[self].first_child = static_cast<std::int32_t>(block);
+    for (int i = 0; i < entry.child_count; ++i) {
+      const std::size_t child = static_cast<std::size_t>(entry.first_child + i);
+      tree[block + static_cast<std::size_t>(i)].radius = std::min(shape[child].radius, global_);
+      if (shape[child].radius < reach)
+        emit_pair_children(shape, child, reach, tree, block + static_cast<std::size_t>(i));
+    }
+  }
+
   const SubspaceBvh& bvh_;
   const TriangleMesh& mesh_;
   const CertificateParameters& parameters_;
@@ -557,6 +625,7 @@ void PrecomputeDriver::run(const SubspaceBvh& bvh, const std::vector<char>& sele
   stats.triangle_pairs_culled += totals.triangle_pairs_culled;
   stats.triangle_pairs_bounded += totals.triangle_pairs_bounded;
   stats.constant_mode_evaluations += totals.evaluations;
+  stats.pair_tree_tasks += totals.pair_tree_tasks;
 }
 
 void PrecomputeDriver::copy_node(const SubspaceBvh& bvh, int n, const Certificates& from, PrecomputeState& to) {

@@ -235,18 +235,33 @@ TEST_CASE("certificates: sibling radii are looked up by either order, and only f
 }
 
 TEST_CASE("certificates: the same radii on one thread as on every thread", "[certificates]") {
-  const auto m = sscc::test::certified_sphere();  // precomputed on every core
+  // Large enough for pair trees whose descents run as tasks (precomputed on every core).
+  sscc::TriangleMesh mesh = sscc::test::uv_sphere(12, 24);
+  const Eigen::MatrixXd basis = sscc::polynomial_basis(mesh, 27);
+  const auto m = std::make_unique<sscc::test::CertifiedModel>(std::move(mesh), basis, Eigen::VectorXd::Ones(27));
   sscc::set_default_threads(1);
   const sscc::Certificates serial = sscc::Certificates::precompute(m->bvh);
   sscc::set_default_threads(0);
   REQUIRE(serial.stats().threads == 1);
+  // Pair trees whose descents ran as tasks, in another order on every core than on one.
+  REQUIRE(serial.stats().pair_tree_tasks > 0);
+  REQUIRE(m->certificates.stats().pair_tree_tasks == serial.stats().pair_tree_tasks);
+  const auto& nodes = m->bvh.nodes();
   for (int n = 0; n < serial.node_count(); ++n) {
     REQUIRE(serial.node_radius(n) == m->certificates.node_radius(n));
-    for (int a = 0; a < serial.node_count(); ++a) {
-      if (m->certificates.sibling_radius(n, a) > 0.0) {
-        REQUIRE(serial.sibling_radius(n, a) == m->certificates.sibling_radius(n, a));
+    for (int a = nodes[n].first_child; a < nodes[n].first_child + nodes[n].child_count; ++a) {
+      for (int b = a + 1; b < nodes[n].first_child + nodes[n].child_count; ++b) {
+        REQUIRE(serial.sibling_radius(a, b) == m->certificates.sibling_radius(a, b));
+        REQUIRE(serial.sibling_pair_certificate(a, b) == m->certificates.sibling_pair_certificate(a, b));
       }
     }
+  }
+  const std::vector<sscc::PairCertificate>& one = serial.pair_certificates();
+  const std::vector<sscc::PairCertificate>& every = m->certificates.pair_certificates();
+  REQUIRE(one.size() == every.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    REQUIRE(one[i].radius == every[i].radius);
+    REQUIRE(one[i].first_child == every[i].first_child);
   }
 }
 

@@ -114,6 +114,7 @@ struct PrecomputeStats {
   long triangle_pairs_bounded = 0;  ///< triangle_pair_radius calls
   long constant_mode_evaluations = 0;
   long pair_certificates = 0;  ///< stored below the sibling pairs
+  long pair_tree_tasks = 0;    ///< descents below the pair certificates run as tasks any thread takes up
   int threads = 1;
   double seconds = 0.0;
 };
