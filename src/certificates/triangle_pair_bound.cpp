@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/avx2_clone.hpp"
+#include "common/scaled_norm.hpp"
 #include "sscc/geometry/triangle_distance.hpp"
 
 namespace sscc {
@@ -429,7 +430,7 @@ constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up
                                                  const PositionRounding& rounding, Eigen::Vector3d& n,
                                                  std::array<double, 9>& gap) {
   const Eigen::Vector3d axis = (b.rest[0] + b.rest[1] + b.rest[2]) - (a.rest[0] + a.rest[1] + a.rest[2]);
-  const double length = axis.stableNorm();
+  const double length = detail::stable_norm3(axis);
   if (!(length > 0.0)) return false;
   n = axis / length;
   constexpr double u = std::numeric_limits<double>::epsilon();

@@ -8,17 +8,15 @@
 #include <random>
 #include <utility>
 
-#if defined(__GLIBC__)
-#include <fenv.h>
-#endif
-
 #include "sscc/ccd/kernels.hpp"
 #include "sscc/certificates/triangle_pair_bound.hpp"
 #include "support/contact_search.hpp"
+#include "support/overflow_allowed.hpp"
 
 namespace {
 
 using sscc::ModalTriangle;
+using sscc::test::OverflowAllowed;
 
 struct PairMaker {
   std::mt19937_64 rng;
@@ -59,18 +57,6 @@ struct PairMaker {
     }
     return t;
   }
-};
-
-/// Overflow does not trap while this lives (the runner traps it: tests/main.cpp): for inputs
-/// whose bounds overflow by design, to check what they return then.
-struct OverflowAllowed {
-#if defined(__GLIBC__)
-  int trapped = fedisableexcept(FE_OVERFLOW);
-  ~OverflowAllowed() {
-    feclearexcept(FE_OVERFLOW);
-    feenableexcept(trapped);
-  }
-#endif
 };
 
 }  // namespace
@@ -265,7 +251,9 @@ TEST_CASE("1D floor: never above the 1D bound, and the cut answers as the 1D bou
     REQUIRE(floor >= 0.0);
     REQUIRE(floor <= bound);
     // With a cut: the 1D bound itself below the floor's reach, at least the cut above it.
-    for (double cut : {0.5 * floor, floor, 1.5 * floor + 1e-300, 2.0 * bound}) {
+    // Cuts just below and above the floor (2^-42 relative), where the comparison with it decides.
+    for (double cut :
+         {0.5 * floor, floor * (1.0 - 0x1p-42), floor, floor * (1.0 + 0x1p-42), 1.5 * floor + 1e-300, 2.0 * bound}) {
       const double answer = sscc::one_dimensional_radius(ta, tb, sa, sb, cut);
       REQUIRE(answer <= bound);
       REQUIRE((answer >= cut) == (bound >= cut));
