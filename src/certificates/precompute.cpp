@@ -249,7 +249,9 @@ class Precomputation {
     int x, y;
     int first_child = -1, child_count = 0;  // a near inner pair's block in the shape
     PairJob job = PairJob::kNone;
-    double radius = 0.0;  // up to the reach
+    // The box bound (a far pair's, when at the reach or beyond), the descent's (below it), or
+    // the least of the reach and the children's (a near pair's).
+    double radius = 0.0;
   };
   // Pair tree descents below this many triangle pairs run where they are met. A task costs
   // about a microsecond to hand over, 512 screened pairs 50-100 us: larger, fewer tasks to

@@ -38,16 +38,19 @@ inline double length3(double x, double y, double z) {
   return scaled_norm(3, [&](int k) { return v[k]; });
 }
 
-/// v.stableNorm() as Eigen 3.4 computes it for a 16-byte-aligned vector (one block: the
-/// largest magnitude m, then m sqrt of the sum of (v_i (1 / m))^2 in index order), inline and
-/// the same wherever v lies: stableNorm splits a vector at another address into two blocks
-/// with other roundings. Where m is not a normal number stableNorm itself answers (it takes
-/// other paths there). The precomputation's 1D bound calls it for every pair it screens (the
-/// call was 6% of its time), and its certificate files stay the same only while the values do.
+/// v.stableNorm() as Eigen 3.4 computes it for a vector aligned to its packets (one block:
+/// the largest magnitude m, then m sqrt of the sum of (v_i (1 / m))^2 in index order), inline
+/// and the same wherever v lies: stableNorm splits a vector at another address into two
+/// blocks, with other roundings. Where m is not a normal number stableNorm answers, on an
+/// aligned copy. Bit for bit with Eigen's 16-byte packets and no FMA contraction (the project's
+/// baseline x86-64 build, and its AVX2 clones: Eigen picks its packets at compile time). The
+/// precomputation's 1D bound calls it for every pair it screens (the call was a few percent
+/// of its time), and its certificate files stay the same only while the values do.
 inline double stable_norm3(const Eigen::Vector3d& v) {
   const double largest = v.cwiseAbs().maxCoeff();
   if (!(largest >= std::numeric_limits<double>::min() && largest <= std::numeric_limits<double>::max())) {
-    return v.stableNorm();
+    alignas(64) double copy[3] = {v[0], v[1], v[2]};
+    return Eigen::Map<const Eigen::Vector3d, Eigen::AlignedMax>(copy).stableNorm();
   }
   const double inverse = 1.0 / largest;
   const double x = v[0] * inverse, y = v[1] * inverse, z = v[2] * inverse;

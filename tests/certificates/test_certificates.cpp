@@ -243,7 +243,7 @@ TEST_CASE("certificates: the same radii on one thread as on every thread", "[cer
   const sscc::Certificates serial = sscc::Certificates::precompute(m->bvh);
   sscc::set_default_threads(0);
   REQUIRE(serial.stats().threads == 1);
-  // Pair trees whose descents ran as tasks, in another order on every core than on one.
+  // Pair trees whose descents ran as tasks: in line on one thread, in any order on several.
   REQUIRE(serial.stats().pair_tree_tasks > 0);
   REQUIRE(m->certificates.stats().pair_tree_tasks == serial.stats().pair_tree_tasks);
   const auto& nodes = m->bvh.nodes();

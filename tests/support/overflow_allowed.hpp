@@ -1,6 +1,8 @@
 // Floating-point overflow allowed in a scope of a test (the runner traps it: tests/main.cpp).
 #pragma once
 
+#include <cstddef>  // defines __GLIBC__ where it applies
+
 #if defined(__GLIBC__)
 #include <fenv.h>
 #endif
