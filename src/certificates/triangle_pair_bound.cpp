@@ -413,6 +413,12 @@ namespace {
 constexpr double kFloorRateGrowth = 1.0 + 1e-9;
 constexpr double kFloorRateAllowance = 1e-12;
 constexpr double kSpreadPad = 1e-9;
+// The computed n^T S n of a unit n (|n| <= 1 + 2u) errs by at most gamma_5 |n|^T |S| |n| <= 1e-15
+// trace(S) (|S_ij| <= sqrt(S_ii S_jj)) above n^T S n <= trace(S), and the spread adds kSpreadPad
+// trace(S): trace(S) (1 + 2 kSpreadPad) bounds the spread's argument with room for the
+// rounding of the trace and of both square roots (monotone). Larger only weakens the quick
+// floor.
+constexpr double kSpreadBound = 1.0 + 2e-9;
 constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up to 10^6
 
 /// sqrt(n^T S n + pad): a bound of a vertex's motion along n relative to its triangle's mean.
@@ -454,6 +460,9 @@ TriangleSummary summarize(const ModalTriangle& t) {
     if (!(s.largest_block_norm < kLargestFloorBlocks)) continue;  // the floor abstains there
     const Eigen::Matrix<double, 3, Eigen::Dynamic> deviation = t.modes[i] - s.mean_modes;
     s.deviation_grams[i] = deviation * deviation.transpose();
+#ifndef SSCC_MUTANT_QUICK_FLOOR_WITHOUT_SPREAD
+    s.largest_spread = std::max(s.largest_spread, std::sqrt(kSpreadBound * s.deviation_grams[i].trace()));
+#endif
   }
   return s;
 }
@@ -490,7 +499,8 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
 [[gnu::always_inline]] inline bool vertex_pair_floors(const TriangleSummary& summary_a,
                                                       const TriangleSummary& summary_b, const Eigen::Vector3d& n,
                                                       const std::array<double, 9>& gap,
-                                                      const PositionRounding& rounding, std::array<double, 9>& floor) {
+                                                      const PositionRounding& rounding, double cut,
+                                                      std::array<double, 9>& floor) {
   const double blocks = summary_a.largest_block_norm + summary_b.largest_block_norm;
   if (!(blocks < kLargestFloorBlocks)) return false;
   const double modes = static_cast<double>(summary_a.mean_modes.cols());
@@ -502,6 +512,17 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
                             .norm();
   const double allowance = kFloorRateAllowance * blocks + 2.0 * rounding.per_norm +
                            std::sqrt((modes + 16.0) * std::numeric_limits<double>::min());
+  // The quick floor: every vertex pair's rate at most the largest spreads', its gap at least
+  // the least gap.
+  const double quick_rate =
+      kFloorRateGrowth * (common + summary_b.largest_spread + summary_a.largest_spread) + allowance;
+  if (quick_rate > 0.0 && std::isfinite(quick_rate)) {
+    const double quick = kOneDimensionalShrink * (*std::min_element(gap.begin(), gap.end()) / quick_rate);
+    if (quick >= cut) {
+      floor.fill(quick);
+      return true;
+    }
+  }
   std::array<double, 3> spread_a, spread_b;
   for (int i = 0; i < 3; ++i) {
     spread_a[i] = spread_along(summary_a.deviation_grams[i], n);
@@ -521,7 +542,7 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
 double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
                        const std::array<double, 9>& gap, const PositionRounding& rounding) {
   std::array<double, 9> floor;
-  if (!vertex_pair_floors(summary_a, summary_b, n, gap, rounding, floor)) return 0.0;
+  if (!vertex_pair_floors(summary_a, summary_b, n, gap, rounding, INFINITY, floor)) return 0.0;
   return *std::min_element(floor.begin(), floor.end());
 }
 
@@ -544,7 +565,7 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
   std::array<int, 9> needed;
   int count_needed = 0;
   double least_floor = INFINITY;  // of the vertex pairs left out
-  const bool floors = cut < INFINITY && vertex_pair_floors(summary_a, summary_b, n, gap, rounding, floor);
+  const bool floors = cut < INFINITY && vertex_pair_floors(summary_a, summary_b, n, gap, rounding, cut, floor);
   for (int i = 0; i < 9; ++i) {
     const bool left_out = floors && floor[i] >= cut;
     needed[count_needed] = i;

@@ -94,13 +94,17 @@ struct TriangleSummary {
   /// (block_k - mean_modes)(block_k - mean_modes)^T per vertex k: n^T S_k n is the squared
   /// motion of vertex k along n relative to the mean, per unit ||q_hat||
   std::array<Eigen::Matrix3d, 3> deviation_grams;
+  /// at least sqrt(n^T S_k n + pad) (the floor's spread) for every vertex k and unit n
+  double largest_spread = 0.0;
 };
 TriangleSummary summarize(const ModalTriangle& t);
 
 /// one_dimensional_radius(a, b) from the triangles' summaries: the same value where it lies
 /// below `cut`; where it does not, a value at least `cut` and never above it (a caller
 /// comparing with `cut` decides the same). The ratio of a vertex pair whose floor (below)
-/// reaches the cut is not computed: when every one's does, that is the floor.
+/// reaches the cut is not computed: when every one's does, that is the floor, or a quick floor
+/// below it (every vertex pair's rate bounded with the triangles' largest spreads, and the
+/// least gap) when that reaches the cut before the nine floors are computed.
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
                               const TriangleSummary& summary_b, double cut = INFINITY);
 
