@@ -464,6 +464,9 @@ TriangleSummary summarize(const ModalTriangle& t) {
     s.largest_spread = std::max(s.largest_spread, std::sqrt(kSpreadBound * s.deviation_grams[i].trace()));
 #endif
   }
+  const Eigen::Index r = t.modes[0].cols();
+  s.vertex_rows = Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(9, (r + 3) / 4 * 4);
+  for (int i = 0; i < 3; ++i) s.vertex_rows.block(3 * i, 0, 3, r) = t.modes[i];
   return s;
 }
 
@@ -493,6 +496,14 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
   }
 }
 
+/// What the floors add to every rate they bound (see kFloorRateAllowance).
+double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSummary& summary_b,
+                            const PositionRounding& rounding) {
+  const double modes = static_cast<double>(summary_a.mean_modes.cols());
+  return kFloorRateAllowance * (summary_a.largest_block_norm + summary_b.largest_block_norm) + 2.0 * rounding.per_norm +
+         std::sqrt((modes + 16.0) * std::numeric_limits<double>::min());
+}
+
 /// The floor (header) of each vertex pair's ratio, at 3 j + k, from the axis and gaps the 1D
 /// bound computes, each times the 1D bound's shrink (so never above that vertex pair's ratio
 /// in the 1D bound as computed); false when the floor abstains.
@@ -503,15 +514,13 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
                                                       std::array<double, 9>& floor) {
   const double blocks = summary_a.largest_block_norm + summary_b.largest_block_norm;
   if (!(blocks < kLargestFloorBlocks)) return false;
-  const double modes = static_cast<double>(summary_a.mean_modes.cols());
   // ||n^T (M_b - M_a)||, whole rows at a time (vectorized).
   const auto& mean_a = summary_a.mean_modes;
   const auto& mean_b = summary_b.mean_modes;
   const double common = (n[0] * (mean_b.row(0) - mean_a.row(0)) + n[1] * (mean_b.row(1) - mean_a.row(1)) +
                          n[2] * (mean_b.row(2) - mean_a.row(2)))
                             .norm();
-  const double allowance = kFloorRateAllowance * blocks + 2.0 * rounding.per_norm +
-                           std::sqrt((modes + 16.0) * std::numeric_limits<double>::min());
+  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding);
   // The quick floor: every vertex pair's rate at most the largest spreads', its gap at least
   // the least gap.
   const double quick_rate =
@@ -536,6 +545,79 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
     }
   }
   return true;
+}
+
+// The projected floor replaces a vertex pair's computed rate by
+//   growth ||n^T (U_b,k - U_a,j)|| + allowance (the floor's),
+// the norm computed from whole rows of the blocks (vertex_rows) in any order, without the
+// 1D bound's slacks. Against the exact norm N of the computed n, the 1D bound's projections
+// err by gamma_3 |n|.|column| and its slacks add 4u (1 + gamma_3) |n|.|column|, so by
+// Minkowski over the columns its rate is at most (1 + gamma_(r + 6)) (N + 7.2u (F_a,j + F_b,k))
+// plus its 2 per_norm, F the blocks' Frobenius norms (|n| <= 1 + 2u); the projected norm as
+// computed, N', errs the same way without the slacks: N <= (1 + gamma_(r + 5)) N' + 3.1u
+// (F_a,j + F_b,k). So the 1D bound's rate is at most (1 + gamma_(2r + 12)) N' + 11u (F_a,j +
+// F_b,k) + 2 per_norm, and the floor's growth (1e-9) and allowance (1e-12 of the largest
+// blocks, 2 per_norm, the underflow term) cover it for r up to 10^6, with the rounding of
+// growth N' + allowance. As for the floor, rounding is monotone in the quotient: the projected
+// floor never exceeds the vertex pair's ratio in the 1D bound as computed. Whole rows, four
+// columns to a lane, and no slacks: a fraction of the bound's own pass, which then runs only
+// on the vertex pairs near or below the cut.
+constexpr int kProjectionLanes = 4;
+
+[[gnu::always_inline]] inline void leave_out_by_projection(const TriangleSummary& summary_a,
+                                                           const TriangleSummary& summary_b, const Eigen::Vector3d& n,
+                                                           const std::array<double, 9>& gap,
+                                                           const PositionRounding& rounding, double cut,
+                                                           std::array<int, 9>& needed, int& count_needed,
+                                                           double& least_floor) {
+  const Eigen::Index width = summary_a.vertex_rows.cols();
+  std::array<bool, 3> used_a{}, used_b{};
+  for (int t = 0; t < count_needed; ++t) {
+    used_a[needed[t] / 3] = true;
+    used_b[needed[t] % 3] = true;
+  }
+  // Copies: the compiler then knows no store below changes them.
+  const double n0 = n[0], n1 = n[1], n2 = n[2];
+  alignas(32) double along[6][kColumnChunk];
+  alignas(32) double lanes[9][kProjectionLanes] = {};
+  for (Eigen::Index first = 0; first < width; first += kColumnChunk) {
+    const int count = static_cast<int>(std::min<Eigen::Index>(kColumnChunk, width - first));
+    for (int v = 0; v < 6; ++v) {
+      if (!(v < 3 ? used_a[v] : used_b[v - 3])) continue;
+      const double* x = (v < 3 ? summary_a : summary_b).vertex_rows.data() + 3 * (v % 3) * width + first;
+      const double* y = x + width;
+      const double* z = y + width;
+      for (int c = 0; c < count; ++c) along[v][c] = (n0 * x[c] + n1 * y[c]) + n2 * z[c];
+    }
+    for (int t = 0; t < count_needed; ++t) {
+      const double* pa = along[needed[t] / 3];
+      const double* pb = along[3 + needed[t] % 3];
+      for (int c = 0; c < count; c += kProjectionLanes) {
+        for (int l = 0; l < kProjectionLanes; ++l) {
+          const double d = pb[c + l] - pa[c + l];
+          lanes[t][l] += d * d;
+        }
+      }
+    }
+  }
+  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding);
+  int kept = 0;
+  for (int t = 0; t < count_needed; ++t) {
+    const int i = needed[t];
+#ifdef SSCC_MUTANT_PROJECTED_FLOOR_UNPADDED
+    const double rate = std::sqrt((lanes[t][0] + lanes[t][1]) + (lanes[t][2] + lanes[t][3]));
+#else
+    const double rate =
+        kFloorRateGrowth * std::sqrt((lanes[t][0] + lanes[t][1]) + (lanes[t][2] + lanes[t][3])) + allowance;
+#endif
+    const double floor = kOneDimensionalShrink * (gap[i] / rate);
+    if (rate > 0.0 && std::isfinite(rate) && floor >= cut) {
+      least_floor = std::min(least_floor, floor);
+    } else {
+      needed[kept++] = i;
+    }
+  }
+  count_needed = kept;
 }
 
 /// The floor (header): the least of the vertex pairs' floors, 0 when it abstains.
@@ -573,6 +655,10 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
     least_floor = left_out ? std::min(least_floor, floor[i]) : least_floor;
   }
   if (count_needed == 0) return least_floor;
+  if (floors) {
+    leave_out_by_projection(summary_a, summary_b, n, gap, rounding, cut, needed, count_needed, least_floor);
+    if (count_needed == 0) return least_floor;
+  }
   std::array<bool, 3> needed_a{}, needed_b{};
   for (int t = 0; t < count_needed; ++t) {
     needed_a[needed[t] / 3] = true;

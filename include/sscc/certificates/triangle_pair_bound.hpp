@@ -96,6 +96,9 @@ struct TriangleSummary {
   std::array<Eigen::Matrix3d, 3> deviation_grams;
   /// at least sqrt(n^T S_k n + pad) (the floor's spread) for every vertex k and unit n
   double largest_spread = 0.0;
+  /// the three mode blocks again, row-major (rows 3 k to 3 k + 2: vertex k) and padded with
+  /// zero columns to a multiple of four: the projected floor reads n^T U_k as whole rows
+  Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor> vertex_rows;
 };
 TriangleSummary summarize(const ModalTriangle& t);
 
@@ -104,7 +107,9 @@ TriangleSummary summarize(const ModalTriangle& t);
 /// comparing with `cut` decides the same). The ratio of a vertex pair whose floor (below)
 /// reaches the cut is not computed: when every one's does, that is the floor, or a quick floor
 /// below it (every vertex pair's rate bounded with the triangles' largest spreads, and the
-/// least gap) when that reaches the cut before the nine floors are computed.
+/// least gap) when that reaches the cut before the nine floors are computed. Nor is the ratio
+/// of one whose projected floor reaches it: its rate ||n^T (U_b,k - U_a,j)|| from the summaries'
+/// row-major blocks, without the bound's slacks, grown as the floor's.
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
                               const TriangleSummary& summary_b, double cut = INFINITY);
 
