@@ -77,8 +77,9 @@ class Precomputation {
         triangles_(mesh_.triangle_count()),
         summaries_(mesh_.triangle_count()) {
     // Stored (and allocated) in the hierarchy's order: a node pair's triangles then lie
-    // together in memory, which on large meshes (the bunny's 75k triangles hold about 210 MB of
-    // modes and summaries) saves cache misses in the descents that visit every pair.
+    // together in memory, which on large meshes (the bunny's 75k triangles hold about 360 MB of
+    // modes and summaries, the summaries' row-major copies of the modes included) saves cache
+    // misses in the descents that visit every pair.
     const RowMajorMatrix& basis = bvh.model().scaled_basis();
     const std::vector<int>& order = bvh.triangle_order();
     for (int slot = 0; slot < mesh_.triangle_count(); ++slot) {

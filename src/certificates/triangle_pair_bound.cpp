@@ -413,12 +413,18 @@ namespace {
 constexpr double kFloorRateGrowth = 1.0 + 1e-9;
 constexpr double kFloorRateAllowance = 1e-12;
 constexpr double kSpreadPad = 1e-9;
-// The computed n^T S n of a unit n (|n| <= 1 + 2u) errs by at most gamma_5 |n|^T |S| |n| <= 1e-15
-// trace(S) (|S_ij| <= sqrt(S_ii S_jj)) above n^T S n <= trace(S), and the spread adds kSpreadPad
-// trace(S): trace(S) (1 + 2 kSpreadPad) bounds the spread's argument with room for the
-// rounding of the trace and of both square roots (monotone). Larger only weakens the quick
-// floor.
+// The quick floor's spread, sqrt(kSpreadBound trace(S)), bounds the floor's sqrt(n^T S n + pad)
+// for every unit n (|n| <= 1 + 2u), S the Gram matrix as computed: its entries err by at most
+// gamma_r times the sums of |products|, so |S_ij| <= (1 + 2 gamma_r) sqrt(S_ii S_jj) and the
+// computed n^T S n is at most (1 + 2 gamma_r)(1 + gamma_5)(1 + 4u) trace(S), within 3e-10 of
+// trace(S) for r up to 10^6 (subnormal entries err by more, far below the floor's underflow
+// allowance); the pad adds kSpreadPad trace(S). trace(S) (1 + 2 kSpreadPad) covers both with
+// room for the rounding of the trace and of the square roots (monotone). Larger only weakens
+// the quick floor.
 constexpr double kSpreadBound = 1.0 + 2e-9;
+// The projected floor's rows are padded with zero columns to a multiple of this many, its
+// sums of squares kept in as many independent lanes (a 256-bit register of doubles).
+constexpr int kProjectionLanes = 4;
 constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up to 10^6
 
 /// sqrt(n^T S n + pad): a bound of a vertex's motion along n relative to its triangle's mean.
@@ -465,7 +471,8 @@ TriangleSummary summarize(const ModalTriangle& t) {
 #endif
   }
   const Eigen::Index r = t.modes[0].cols();
-  s.vertex_rows = Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(9, (r + 3) / 4 * 4);
+  s.vertex_rows = Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(
+      9, (r + kProjectionLanes - 1) / kProjectionLanes * kProjectionLanes);
   for (int i = 0; i < 3; ++i) s.vertex_rows.block(3 * i, 0, 3, r) = t.modes[i];
   return s;
 }
@@ -562,7 +569,6 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
 // floor never exceeds the vertex pair's ratio in the 1D bound as computed. Whole rows, four
 // columns to a lane, and no slacks: a fraction of the bound's own pass, which then runs only
 // on the vertex pairs near or below the cut.
-constexpr int kProjectionLanes = 4;
 
 [[gnu::always_inline]] inline void leave_out_by_projection(const TriangleSummary& summary_a,
                                                            const TriangleSummary& summary_b, const Eigen::Vector3d& n,
@@ -655,7 +661,8 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
     least_floor = left_out ? std::min(least_floor, floor[i]) : least_floor;
   }
   if (count_needed == 0) return least_floor;
-  if (floors) {
+  const Eigen::Index padded = (r + kProjectionLanes - 1) / kProjectionLanes * kProjectionLanes;
+  if (floors && summary_a.vertex_rows.cols() == padded && summary_b.vertex_rows.cols() == padded) {
     leave_out_by_projection(summary_a, summary_b, n, gap, rounding, cut, needed, count_needed, least_floor);
     if (count_needed == 0) return least_floor;
   }

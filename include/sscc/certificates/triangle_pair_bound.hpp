@@ -94,7 +94,8 @@ struct TriangleSummary {
   /// (block_k - mean_modes)(block_k - mean_modes)^T per vertex k: n^T S_k n is the squared
   /// motion of vertex k along n relative to the mean, per unit ||q_hat||
   std::array<Eigen::Matrix3d, 3> deviation_grams;
-  /// at least sqrt(n^T S_k n + pad) (the floor's spread) for every vertex k and unit n
+  /// at least sqrt(n^T S_k n + pad) (the floor's spread) for every vertex k and unit n, where
+  /// the floor does not abstain (blocks below its range)
   double largest_spread = 0.0;
   /// the three mode blocks again, row-major (rows 3 k to 3 k + 2: vertex k) and padded with
   /// zero columns to a multiple of four: the projected floor reads n^T U_k as whole rows
@@ -102,7 +103,8 @@ struct TriangleSummary {
 };
 TriangleSummary summarize(const ModalTriangle& t);
 
-/// one_dimensional_radius(a, b) from the triangles' summaries: the same value where it lies
+/// one_dimensional_radius(a, b) from the triangles' summaries (summarize(a), summarize(b):
+/// the floors below trust them as they are): the same value where it lies
 /// below `cut`; where it does not, a value at least `cut` and never above it (a caller
 /// comparing with `cut` decides the same). The ratio of a vertex pair whose floor (below)
 /// reaches the cut is not computed: when every one's does, that is the floor, or a quick floor
