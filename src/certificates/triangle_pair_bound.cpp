@@ -425,6 +425,9 @@ constexpr double kSpreadBound = 1.0 + 2e-9;
 // The projected floor's rows are padded with zero columns to a multiple of this many, its
 // sums of squares kept in as many independent lanes (a 256-bit register of doubles).
 constexpr int kProjectionLanes = 4;
+constexpr Eigen::Index padded_width(Eigen::Index modes) {
+  return (modes + kProjectionLanes - 1) / kProjectionLanes * kProjectionLanes;
+}
 constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up to 10^6
 
 /// sqrt(n^T S n + pad): a bound of a vertex's motion along n relative to its triangle's mean.
@@ -471,8 +474,7 @@ TriangleSummary summarize(const ModalTriangle& t) {
 #endif
   }
   const Eigen::Index r = t.modes[0].cols();
-  s.vertex_rows = Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(
-      9, (r + kProjectionLanes - 1) / kProjectionLanes * kProjectionLanes);
+  s.vertex_rows = Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(9, padded_width(r));
   for (int i = 0; i < 3; ++i) s.vertex_rows.block(3 * i, 0, 3, r) = t.modes[i];
   return s;
 }
@@ -569,7 +571,6 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
 // floor never exceeds the vertex pair's ratio in the 1D bound as computed. Whole rows, four
 // columns to a lane, and no slacks: a fraction of the bound's own pass, which then runs only
 // on the vertex pairs near or below the cut.
-
 [[gnu::always_inline]] inline void leave_out_by_projection(const TriangleSummary& summary_a,
                                                            const TriangleSummary& summary_b, const Eigen::Vector3d& n,
                                                            const std::array<double, 9>& gap,
@@ -661,8 +662,7 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
     least_floor = left_out ? std::min(least_floor, floor[i]) : least_floor;
   }
   if (count_needed == 0) return least_floor;
-  const Eigen::Index padded = (r + kProjectionLanes - 1) / kProjectionLanes * kProjectionLanes;
-  if (floors && summary_a.vertex_rows.cols() == padded && summary_b.vertex_rows.cols() == padded) {
+  if (floors && summary_a.vertex_rows.cols() == padded_width(r) && summary_b.vertex_rows.cols() == padded_width(r)) {
     leave_out_by_projection(summary_a, summary_b, n, gap, rounding, cut, needed, count_needed, least_floor);
     if (count_needed == 0) return least_floor;
   }
