@@ -423,12 +423,16 @@ constexpr double kSpreadPad = 1e-9;
 // the quick floor.
 constexpr double kSpreadBound = 1.0 + 2e-9;
 // The projected floor's rows are padded with zero columns to a multiple of this many, its
-// sums of squares kept in as many independent lanes (a 256-bit register of doubles).
-constexpr int kProjectionLanes = 4;
+// sums of squares kept in as many independent lanes (a 256-bit register of floats).
+constexpr int kProjectionLanes = 8;
 constexpr Eigen::Index padded_width(Eigen::Index modes) {
   return (modes + kProjectionLanes - 1) / kProjectionLanes * kProjectionLanes;
 }
 constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up to 10^6
+// The projected floor runs in single precision on blocks below this Frobenius norm (its
+// squares stay below 2^88, far from the floats' overflow); larger ones get no rows, and the
+// floor abstains there.
+constexpr double kLargestProjectedBlocks = 0x1p40;
 
 /// sqrt(n^T S n + pad): a bound of a vertex's motion along n relative to its triangle's mean.
 [[gnu::always_inline]] inline double spread_along(const Eigen::Matrix3d& deviation_gram, const Eigen::Vector3d& n) {
@@ -473,9 +477,10 @@ TriangleSummary summarize(const ModalTriangle& t) {
     s.largest_spread = std::max(s.largest_spread, std::sqrt(kSpreadBound * s.deviation_grams[i].trace()));
 #endif
   }
+  if (!(s.largest_block_norm < kLargestProjectedBlocks)) return s;
   const Eigen::Index r = t.modes[0].cols();
-  s.vertex_rows = Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(9, padded_width(r));
-  for (int i = 0; i < 3; ++i) s.vertex_rows.block(3 * i, 0, 3, r) = t.modes[i];
+  s.vertex_rows = Eigen::Matrix<float, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(9, padded_width(r));
+  for (int i = 0; i < 3; ++i) s.vertex_rows.block(3 * i, 0, 3, r) = t.modes[i].cast<float>();
   return s;
 }
 
@@ -557,20 +562,31 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
 }
 
 // The projected floor replaces a vertex pair's computed rate by
-//   growth ||n^T (U_b,k - U_a,j)|| + allowance (the floor's),
-// the norm computed from whole rows of the blocks (vertex_rows) in any order, without the
-// 1D bound's slacks. Against the exact norm N of the computed n, the 1D bound's projections
-// err by gamma_3 |n|.|column| and its slacks add 4u (1 + gamma_3) |n|.|column|, so by
-// Minkowski over the columns its rate is at most (1 + gamma_(r + 6)) (N + 7.2u (F_a,j + F_b,k))
-// plus its 2 per_norm, F the blocks' Frobenius norms (|n| <= 1 + 2u); the projected norm as
-// computed, N', errs the same way without the slacks: N <= (1 + gamma_(r + 5)) N' + 3.1u
-// (F_a,j + F_b,k). So the 1D bound's rate is at most (1 + gamma_(2r + 12)) N' + 11u (F_a,j +
-// F_b,k) + 2 per_norm, and the floor's growth (1e-9) and allowance (1e-12 of the largest
-// blocks, 2 per_norm, the underflow term) cover it for r up to 10^6, with the rounding of
-// growth N' + allowance. As for the floor, rounding is monotone in the quotient: the projected
-// floor never exceeds the vertex pair's ratio in the 1D bound as computed. Whole rows, four
-// columns to a lane, and no slacks: a fraction of the bound's own pass, which then runs only
-// on the vertex pairs near or below the cut.
+//   g ||n_f^T (U_b,k - U_a,j)_f||_f + kProjectedBlockAllowance (block_a + block_b)
+//     + sqrt((w + 16) FLT_MIN) + allowance (the floor's),
+// the norm computed in single precision (f: n and the blocks rounded to floats, the
+// arithmetic in floats, whole rows of vertex_rows, w columns padded, summed in eight lanes),
+// g = 1 + (w / 8 + 16) 2^-23. Against the exact norm N of the computed n, the 1D bound's
+// projections err by gamma_3 |n|.|column| and its slacks add 4u (1 + gamma_3) |n|.|column|, so
+// by Minkowski over the columns its rate is at most (1 + gamma_(r + 6)) (N + 7.2u (F_a,j +
+// F_b,k)) plus its 2 per_norm, F the blocks' Frobenius norms (|n| <= 1 + 2u). With v the
+// float unit roundoff (2^-24): rounding n and a column to floats errs by 2v |n_i| |U_i| per
+// term and the 3-term float dot product by gamma_3(v), in all 5.1 v ||column|| (Cauchy-
+// Schwarz) per vertex, plus at most 2^-107 a column from floats below FLT_MIN (blocks below
+// 2^40); the float difference adds v of itself. So N <= (1 + 1.1 v) ||d|| + 5.2 v (F_a,j + F_b,k) +
+// sqrt(w) 2^-106, d the float differences. Their squares and sums (nonnegative, at most w / 8
+// terms a lane, then three levels across the lanes) and the square root err by at most (w /
+// 16 + 4) v relatively, and squares below FLT_MIN by 2^-150 each (sums of subnormals are
+// exact): ||d|| <= (1 + (w / 16 + 4.1) v) N_f + sqrt(w) 2^-75. The growth g covers the
+// relative terms with gamma_(r + 6) (at most 1.2e-10 for r up to 10^6) and the rounding of
+// the double operations on N_f; kProjectedBlockAllowance (16.7 v) covers 5.2 v (1 + 1e-9)
+// (F_a,j + F_b,k) with 7.2u of it; the square-root term the underflow, 2^-63 per column's
+// worth. As for the floor, rounding is monotone in the quotient: the projected floor never
+// exceeds the vertex pair's ratio in the 1D bound as computed. Whole rows, eight columns to a
+// lane, half the bytes, and no slacks: a fraction of the bound's own pass, which then runs
+// only on the vertex pairs near or below the cut. Smaller constants could lift it above the
+// bound; larger ones only leave more pairs to the bound's own pass.
+constexpr double kProjectedBlockAllowance = 1e-6;
 [[gnu::always_inline]] inline void leave_out_by_projection(const TriangleSummary& summary_a,
                                                            const TriangleSummary& summary_b, const Eigen::Vector3d& n,
                                                            const std::array<double, 9>& gap,
@@ -584,38 +600,44 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
     used_b[needed[t] % 3] = true;
   }
   // Copies: the compiler then knows no store below changes them.
-  const double n0 = n[0], n1 = n[1], n2 = n[2];
-  alignas(32) double along[6][kColumnChunk];
-  alignas(32) double lanes[9][kProjectionLanes] = {};
+  const float n0 = static_cast<float>(n[0]), n1 = static_cast<float>(n[1]), n2 = static_cast<float>(n[2]);
+  alignas(32) float along[6][kColumnChunk];
+  alignas(32) float lanes[9][kProjectionLanes] = {};
   for (Eigen::Index first = 0; first < width; first += kColumnChunk) {
     const int count = static_cast<int>(std::min<Eigen::Index>(kColumnChunk, width - first));
     for (int v = 0; v < 6; ++v) {
       if (!(v < 3 ? used_a[v] : used_b[v - 3])) continue;
-      const double* x = (v < 3 ? summary_a : summary_b).vertex_rows.data() + 3 * (v % 3) * width + first;
-      const double* y = x + width;
-      const double* z = y + width;
+      const float* x = (v < 3 ? summary_a : summary_b).vertex_rows.data() + 3 * (v % 3) * width + first;
+      const float* y = x + width;
+      const float* z = y + width;
       for (int c = 0; c < count; ++c) along[v][c] = (n0 * x[c] + n1 * y[c]) + n2 * z[c];
     }
     for (int t = 0; t < count_needed; ++t) {
-      const double* pa = along[needed[t] / 3];
-      const double* pb = along[3 + needed[t] % 3];
+      const float* pa = along[needed[t] / 3];
+      const float* pb = along[3 + needed[t] % 3];
       for (int c = 0; c < count; c += kProjectionLanes) {
         for (int l = 0; l < kProjectionLanes; ++l) {
-          const double d = pb[c + l] - pa[c + l];
+          const float d = pb[c + l] - pa[c + l];
           lanes[t][l] += d * d;
         }
       }
     }
   }
-  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding);
+  const double columns = static_cast<double>(width);
+  const double growth = 1.0 + (columns / kProjectionLanes + 16.0) * 0x1p-23;
+  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding) +
+                           kProjectedBlockAllowance * (summary_a.largest_block_norm + summary_b.largest_block_norm) +
+                           std::sqrt((columns + 16.0) * std::numeric_limits<float>::min());
   int kept = 0;
   for (int t = 0; t < count_needed; ++t) {
     const int i = needed[t];
+    const float* sums = lanes[t];
+    const double norm =
+        std::sqrt(((sums[0] + sums[1]) + (sums[2] + sums[3])) + ((sums[4] + sums[5]) + (sums[6] + sums[7])));
 #ifdef SSCC_MUTANT_PROJECTED_FLOOR_UNPADDED
-    const double rate = std::sqrt((lanes[t][0] + lanes[t][1]) + (lanes[t][2] + lanes[t][3]));
+    const double rate = norm;
 #else
-    const double rate =
-        kFloorRateGrowth * std::sqrt((lanes[t][0] + lanes[t][1]) + (lanes[t][2] + lanes[t][3])) + allowance;
+    const double rate = growth * norm + allowance;
 #endif
     const double floor = kOneDimensionalShrink * (gap[i] / rate);
     if (rate > 0.0 && std::isfinite(rate) && floor >= cut) {

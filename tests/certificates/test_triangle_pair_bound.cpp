@@ -238,12 +238,13 @@ TEST_CASE("1D floor: never above the 1D bound, and the cut answers as the 1D bou
     const double noise = trial % 7 == 0 ? 0.0 : 0.01;
     ModalTriangle ta = m.with_modes(a, linear, quadratic, smooth, noise);
     ModalTriangle tb = m.with_modes(b, linear, quadratic, smooth, noise);
-    // Some pairs with modes near the ends of the range, where squares underflow or overflow.
-    const double extreme[] = {1.0, 1e-160, 1e-155, 1e150, 1e154};
+    // Some pairs with modes near the ends of the range, where squares underflow or overflow,
+    // and of the projected floor's (floats below FLT_MIN, blocks near its largest).
+    const double extreme[] = {1.0, 1e-160, 1e-155, 1e150, 1e154, 1e-41, 2e10};
     const OverflowAllowed overflow;  // the 1D bound's squares at 1e154
     for (int i = 0; i < 3; ++i) {
-      ta.modes[i] *= extreme[trial % 11 < 5 ? trial % 11 : 0];
-      tb.modes[i] *= extreme[trial % 11 < 5 ? trial % 11 : 0];
+      ta.modes[i] *= extreme[trial % 11 < 7 ? trial % 11 : 0];
+      tb.modes[i] *= extreme[trial % 11 < 7 ? trial % 11 : 0];
     }
     const sscc::TriangleSummary sa = sscc::summarize(ta), sb = sscc::summarize(tb);
     const double bound = sscc::one_dimensional_radius(ta, tb);
@@ -281,8 +282,10 @@ TEST_CASE("1D floor: never above the 1D bound, and the cut answers as the 1D bou
   }
   // Parallel triangles a unit apart along x, r = 1, where the triangle inequality the floor
   // uses is an equality: only the allowances keep it below, also where squares underflow
-  // (s near 1e-160) or the 1D bound's overflow (s near 1e154).
-  for (double scale : {1.0, 1e-100, 1e-158, 1.5e-162, 1e-200, 1e-310, 1e150, 5.5e153, 1e200, 1e300}) {
+  // (s near 1e-160) or the 1D bound's overflow (s near 1e154), and where the projected floor's
+  // floats are subnormal (1e-40, 1e-45) or its blocks near the largest it takes (1e11).
+  for (double scale :
+       {1.0, 1e-20, 1e-40, 1e-45, 1e-100, 1e-158, 1.5e-162, 1e-200, 1e-310, 1e11, 1e150, 5.5e153, 1e200, 1e300}) {
     ModalTriangle a, b;
     a.rest = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)};
     b.rest = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(1, 0, 1)};

@@ -97,9 +97,10 @@ struct TriangleSummary {
   /// at least sqrt(n^T S_k n + pad) (the floor's spread) for every vertex k and unit n, where
   /// the floor does not abstain (blocks below its range)
   double largest_spread = 0.0;
-  /// the three mode blocks again, row-major (rows 3 k to 3 k + 2: vertex k) and padded with
-  /// zero columns to a multiple of four: the projected floor reads n^T U_k as whole rows
-  Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor> vertex_rows;
+  /// the three mode blocks again in single precision, row-major (rows 3 k to 3 k + 2: vertex
+  /// k) and padded with zero columns to a multiple of eight: the projected floor reads n^T U_k
+  /// as whole rows; empty where the blocks lie outside its range
+  Eigen::Matrix<float, 9, Eigen::Dynamic, Eigen::RowMajor> vertex_rows;
 };
 TriangleSummary summarize(const ModalTriangle& t);
 
@@ -110,8 +111,9 @@ TriangleSummary summarize(const ModalTriangle& t);
 /// reaches the cut is not computed: when every one's does, that is the floor, or a quick floor
 /// below it (every vertex pair's rate bounded with the triangles' largest spreads, and the
 /// least gap) when that reaches the cut before the nine floors are computed. Nor is the ratio
-/// of one whose projected floor reaches it: its rate ||n^T (U_b,k - U_a,j)|| from the summaries'
-/// row-major blocks, without the bound's slacks, grown as the floor's.
+/// of one whose projected floor reaches it: its rate ||n^T (U_b,k - U_a,j)|| in single precision
+/// from the summaries' row-major blocks, without the bound's slacks, grown and padded to cover
+/// the floats' rounding.
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
                               const TriangleSummary& summary_b, double cut = INFINITY);
 
