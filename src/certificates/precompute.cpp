@@ -45,14 +45,13 @@ struct RunningMinimum {
 
 struct Counters {
   long node_pairs_visited = 0, node_pairs_culled = 0, triangle_pairs_culled = 0, triangle_pairs_bounded = 0,
-       evaluations = 0, pair_certificates = 0, pair_tree_tasks = 0;
+       evaluations = 0, pair_tree_tasks = 0;
   void add(const Counters& o) {
     node_pairs_visited += o.node_pairs_visited;
     node_pairs_culled += o.node_pairs_culled;
     triangle_pairs_culled += o.triangle_pairs_culled;
     triangle_pairs_bounded += o.triangle_pairs_bounded;
     evaluations += o.evaluations;
-    pair_certificates += o.pair_certificates;
     pair_tree_tasks += o.pair_tree_tasks;
   }
 };
@@ -203,7 +202,6 @@ class Precomputation {
     resolve_near_radius(0, reach, shape);
     std::vector<PairCertificate> tree(1);
     emit_pair_children(shape, 0, reach, tree, 0);
-    counters.pair_certificates += static_cast<long>(tree.size());
     return tree;
   }
 

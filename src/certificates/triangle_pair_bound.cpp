@@ -430,7 +430,7 @@ constexpr Eigen::Index padded_width(Eigen::Index modes) {
 }
 constexpr double kLargestFloorBlocks = 1e145;  // 4 r (1e145)^2 < 1e297 for r up to 10^6
 // The projected floor runs in single precision on blocks below this Frobenius norm (its
-// squares stay below 2^88, far from the floats' overflow); larger ones get no rows, and the
+// squares stay below 2^84, far from the floats' overflow); larger ones get no rows, and the
 // floor abstains there.
 constexpr double kLargestProjectedBlocks = 0x1p40;
 
@@ -510,6 +510,17 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
   }
 }
 
+/// Which vertices of a (j) and of b (k) the vertex pairs 3 j + k in needed[0, count) use.
+[[gnu::always_inline]] inline void vertices_of(const std::array<int, 9>& needed, int count, std::array<bool, 3>& of_a,
+                                               std::array<bool, 3>& of_b) {
+  of_a = {};
+  of_b = {};
+  for (int t = 0; t < count; ++t) {
+    of_a[needed[t] / 3] = true;
+    of_b[needed[t] % 3] = true;
+  }
+}
+
 /// What the floors add to every rate they bound (see kFloorRateAllowance).
 double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSummary& summary_b,
                             const PositionRounding& rounding) {
@@ -567,25 +578,27 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
 // the norm computed in single precision (f: n and the blocks rounded to floats, the
 // arithmetic in floats, whole rows of vertex_rows, w columns padded, summed in eight lanes),
 // g = 1 + (w / 8 + 16) 2^-23. Against the exact norm N of the computed n, the 1D bound's
-// projections err by gamma_3 |n|.|column| and its slacks add 4u (1 + gamma_3) |n|.|column|, so
-// by Minkowski over the columns its rate is at most (1 + gamma_(r + 6)) (N + 7.2u (F_a,j +
-// F_b,k)) plus its 2 per_norm, F the blocks' Frobenius norms (|n| <= 1 + 2u). With v the
-// float unit roundoff (2^-24): rounding n and a column to floats errs by 2v |n_i| |U_i| per
-// term and the 3-term float dot product by gamma_3(v), in all 5.1 v ||column|| (Cauchy-
-// Schwarz) per vertex, plus at most 2^-107 a column from floats below FLT_MIN (blocks below
-// 2^40); the float difference adds v of itself. So N <= (1 + 1.1 v) ||d|| + 5.2 v (F_a,j + F_b,k) +
-// sqrt(w) 2^-106, d the float differences. Their squares and sums (nonnegative, at most w / 8
-// terms a lane, then three levels across the lanes) and the square root err by at most (w /
-// 16 + 4) v relatively, and squares below FLT_MIN by 2^-150 each (sums of subnormals are
-// exact): ||d|| <= (1 + (w / 16 + 4.1) v) N_f + sqrt(w) 2^-75. The growth g covers the
-// relative terms with gamma_(r + 6) (at most 1.2e-10 for r up to 10^6) and the rounding of
-// the double operations on N_f; kProjectedBlockAllowance (16.7 v) covers 5.2 v (1 + 1e-9)
-// (F_a,j + F_b,k) with 7.2u of it; the square-root term the underflow, 2^-63 per column's
-// worth. As for the floor, rounding is monotone in the quotient: the projected floor never
-// exceeds the vertex pair's ratio in the 1D bound as computed. Whole rows, eight columns to a
-// lane, half the bytes, and no slacks: a fraction of the bound's own pass, which then runs
-// only on the vertex pairs near or below the cut. Smaller constants could lift it above the
-// bound; larger ones only leave more pairs to the bound's own pass.
+// projections err by gamma_3 |n|.|column| and its slacks add 4u (1 + gamma_3) |n|.|column| (u
+// the double epsilon, 2^-52), so by Minkowski over the columns its rate is at most (1 +
+// gamma_(r + 6)) (N + 7.2u (F_a,j + F_b,k)) plus its 2 per_norm, F the blocks' Frobenius norms
+// (|n| <= 1 + 2u). With v the float unit roundoff (2^-24): rounding n and a column to floats
+// errs by 2v |n_i| |U_i| per term and the 3-term float dot product by gamma_3(v), in all 5.1 v
+// ||column|| (Cauchy-Schwarz) per vertex, plus at most 2^-107 a column from floats below
+// FLT_MIN (blocks below 2^40); the float difference adds v of itself. So N <= (1 + 1.1 v)
+// ||d|| + 5.2 v (F_a,j + F_b,k) + sqrt(w) 2^-106, d the float differences. Their squares and
+// sums (nonnegative, at most w / 8 terms a lane, then three levels across the lanes) and the
+// square root lose at most a factor (1 - v)^(w / 8 + 5) of the squared norm, and squares below
+// FLT_MIN 2^-150 each (sums of subnormals are exact): ||d|| <= (1 - (w / 16 + 2.5) v)^-1 N_f +
+// sqrt(w) 2^-75. The growth g covers these relative terms with gamma_(r + 6) (at most 2.3e-10
+// for r up to 10^6) and the rounding of the double operations on N_f, for w up to 10^6 and
+// beyond; kProjectedBlockAllowance (16.7 v) covers 5.2 v (1 + 1e-9) (F_a,j + F_b,k) with 7.2u
+// of it; the square-root term the underflow, 2^-63 per column's worth (and the squares a
+// flush-to-zero mode would drop, 2^-63 each). As for the floor, rounding is monotone in the
+// quotient: the projected floor never exceeds the vertex pair's ratio in the 1D bound as
+// computed. Whole rows in eight float lanes, 57% of the bytes at 27 modes, and no slacks: a
+// fraction of the bound's own pass, which then runs only on the vertex pairs near or below the
+// cut. Smaller constants could lift it above the bound; larger ones only leave more pairs to
+// the bound's own pass.
 constexpr double kProjectedBlockAllowance = 1e-6;
 [[gnu::always_inline]] inline void leave_out_by_projection(const TriangleSummary& summary_a,
                                                            const TriangleSummary& summary_b, const Eigen::Vector3d& n,
@@ -594,11 +607,8 @@ constexpr double kProjectedBlockAllowance = 1e-6;
                                                            std::array<int, 9>& needed, int& count_needed,
                                                            double& least_floor) {
   const Eigen::Index width = summary_a.vertex_rows.cols();
-  std::array<bool, 3> used_a{}, used_b{};
-  for (int t = 0; t < count_needed; ++t) {
-    used_a[needed[t] / 3] = true;
-    used_b[needed[t] % 3] = true;
-  }
+  std::array<bool, 3> used_a, used_b;
+  vertices_of(needed, count_needed, used_a, used_b);
   // Copies: the compiler then knows no store below changes them.
   const float n0 = static_cast<float>(n[0]), n1 = static_cast<float>(n[1]), n2 = static_cast<float>(n[2]);
   alignas(32) float along[6][kColumnChunk];
@@ -631,11 +641,14 @@ constexpr double kProjectedBlockAllowance = 1e-6;
   int kept = 0;
   for (int t = 0; t < count_needed; ++t) {
     const int i = needed[t];
+    static_assert(kProjectionLanes == 8, "the sum below takes eight lanes");
     const float* sums = lanes[t];
     const double norm =
         std::sqrt(((sums[0] + sums[1]) + (sums[2] + sums[3])) + ((sums[4] + sums[5]) + (sums[6] + sums[7])));
 #ifdef SSCC_MUTANT_PROJECTED_FLOOR_UNPADDED
     const double rate = norm;
+#elif defined(SSCC_MUTANT_PROJECTED_FLOOR_NO_GROWTH)
+    const double rate = norm + allowance;
 #else
     const double rate = growth * norm + allowance;
 #endif
@@ -688,11 +701,8 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
     leave_out_by_projection(summary_a, summary_b, n, gap, rounding, cut, needed, count_needed, least_floor);
     if (count_needed == 0) return least_floor;
   }
-  std::array<bool, 3> needed_a{}, needed_b{};
-  for (int t = 0; t < count_needed; ++t) {
-    needed_a[needed[t] / 3] = true;
-    needed_b[needed[t] % 3] = true;
-  }
+  std::array<bool, 3> needed_a, needed_b;
+  vertices_of(needed, count_needed, needed_a, needed_b);
   // And an upper bound of the squared rate ||n^T (U_b,k - U_a,j)||^2, column by column: each
   // projected difference grown by the rounding of the two projections it subtracts. Columns
   // go in chunks, each quantity for a whole chunk at once (vectorized), and the squares are

@@ -308,6 +308,36 @@ TEST_CASE("1D floor: never above the 1D bound, and the cut answers as the 1D bou
       REQUIRE((answer >= cut) == (bound >= cut));
     }
   }
+  // The same with 2048 modes, the first column L and the others s just under half a unit of
+  // the float square 9 L^2 (the pair's difference is 3 times a column): each lane's sum keeps
+  // 9 L^2 and drops every later square, about 6e-6 of the norm, which only the projected
+  // floor's growth covers (its block allowance is 1e-6 of it). And blocks of 2^40 and more,
+  // where the projected floor abstains and the floors alone answer.
+  for (double scale : {1.0, 0x1p40, 1e13}) {
+    const int r = 2048;
+    const double large = scale, small = 0.9 * 0x1p-12 * scale;
+    ModalTriangle a, b;
+    a.rest = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)};
+    b.rest = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(1, 0, 1)};
+    const double along_a[] = {-1.0, 0.5, 0.5}, along_b[] = {2.0, 0.5, 0.5};
+    for (int i = 0; i < 3; ++i) {
+      a.modes[i] = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, r);
+      b.modes[i] = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, r);
+      for (int c = 0; c < r; ++c) {
+        a.modes[i](0, c) = along_a[i] * (c == 0 ? large : small);
+        b.modes[i](0, c) = along_b[i] * (c == 0 ? large : small);
+      }
+    }
+    const double bound = sscc::one_dimensional_radius(a, b);
+    const sscc::TriangleSummary sa = sscc::summarize(a), sb = sscc::summarize(b);
+    INFO("scale " << scale << " 1D " << bound);
+    REQUIRE(sa.vertex_rows.cols() == (scale < 0x1p40 ? r : 0));
+    for (double cut : {0.99 * bound, bound * (1.0 - 0x1p-42), bound}) {
+      const double answer = sscc::one_dimensional_radius(a, b, sa, sb, cut);
+      REQUIRE(answer <= bound);
+      REQUIRE((answer >= cut) == (bound >= cut));
+    }
+  }
   // The floor earns its place only when it is close to the 1D bound on most pairs.
   REQUIRE(compared > 1000);
   REQUIRE(informative > compared / 2);
