@@ -39,11 +39,14 @@ declare -A guard=(
   [QUICK_FLOOR_WITHOUT_SPREAD]='[floor]'           # so does the quick floor (triangle_pair_bound.cpp)
   [PROJECTED_FLOOR_UNPADDED]='[floor]'             # the projected floor covers the bound's slacks (triangle_pair_bound.cpp)
   [PROJECTED_FLOOR_NO_GROWTH]='[floor]'            # the projected floor's growth covers its float sums (triangle_pair_bound.cpp)
+  [GROUP_FLOOR_NO_REACH]='[group_floor]'           # the group floor counts vertices' distance from centroids (triangle_pair_bound.cpp)
+  [GROUP_FLOOR_NO_DEVIATION]='[group_floor]'       # and the vertex blocks' from the group's (triangle_pair_bound.cpp)
 )
 order=(OWNS_ALWAYS_TRUE NO_SHIFT_MARGIN SEPARATION_3D INFLATE_RADII NO_CONSTANT_MODE_MULTIPLIER BOX_BOX_SINGLE_MODE
   ACCEPT_REFLECTIONS NO_POSITION_ROUNDING GRAM_PAD_FIXED DISPLACEMENT_NO_CENTRES
   AFFINE_NO_RESIDUAL PLANE_NO_BOUND SWEEP_EITHER_END CONTOUR_ANY_WINDING CONTOUR_CROSSING_AT_START INFLATE_PAIR_RADII
-  FLOOR_WITHOUT_SPREAD QUICK_FLOOR_WITHOUT_SPREAD PROJECTED_FLOOR_UNPADDED PROJECTED_FLOOR_NO_GROWTH)
+  FLOOR_WITHOUT_SPREAD QUICK_FLOOR_WITHOUT_SPREAD PROJECTED_FLOOR_UNPADDED PROJECTED_FLOOR_NO_GROWTH
+  GROUP_FLOOR_NO_REACH GROUP_FLOOR_NO_DEVIATION)
 if [ $# -gt 0 ]; then order=("$@"); fi
 for name in "${order[@]}"; do
   if [ -z "${guard[$name]+set}" ]; then echo "mutants: unknown mutant $name" >&2; exit 2; fi

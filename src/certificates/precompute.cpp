@@ -74,7 +74,8 @@ class Precomputation {
         global_(global),
         slot_(mesh_.triangle_count()),
         triangles_(mesh_.triangle_count()),
-        summaries_(mesh_.triangle_count()) {
+        summaries_(mesh_.triangle_count()),
+        groups_(bvh.nodes().size()) {
     // Stored (and allocated) in the hierarchy's order: a node pair's triangles then lie
     // together in memory, which on large meshes (the bunny's 75k triangles hold about 360 MB of
     // modes and summaries, the summaries' row-major copies of the modes included) saves cache
@@ -90,6 +91,11 @@ class Precomputation {
         triangles_[slot].modes[i] = basis.middleRows<3>(3 * v);
       }
       summaries_[slot] = summarize(triangles_[slot]);
+    }
+    for (int n = 0; n < static_cast<int>(bvh.nodes().size()); ++n) {
+      const SubspaceBvh::Node& node = bvh.nodes()[n];
+      groups_[n] = summarize_group(&triangles_[node.triangle_begin], &summaries_[node.triangle_begin],
+                                   node.triangle_end - node.triangle_begin, bvh.subspace_bound(n).mean_modes);
     }
   }
 
@@ -150,6 +156,12 @@ class Precomputation {
 
   void add_node_pair(int a, int b, RunningMinimum& minimum, Counters& counters, const Accuracy& accuracy) const {
     ++counters.node_pairs_visited;
+    // Every triangle pair of the two nodes would be left out by its own screening.
+    if (group_pair_floor(groups_[a], groups_[b], bvh_.subspace_bound(a).mean_modes,
+                         bvh_.subspace_bound(b).mean_modes) >= minimum.lower) {
+      ++counters.node_pairs_culled;
+      return;
+    }
     const SubspaceBvh::Node& na = bvh_.nodes()[a];
     const SubspaceBvh::Node& nb = bvh_.nodes()[b];
     if (na.is_leaf() && nb.is_leaf()) {
@@ -343,6 +355,7 @@ class Precomputation {
   std::vector<int> slot_;  // mesh triangle -> its position in triangles_ and summaries_
   std::vector<ModalTriangle> triangles_;
   std::vector<TriangleSummary> summaries_;
+  std::vector<TriangleGroupSummary> groups_;  // per node, against its mean modes
 };
 
 /// The norm at which the floppiest mode moves some vertex by half the bounding-box

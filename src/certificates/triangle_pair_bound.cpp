@@ -467,6 +467,11 @@ constexpr double kLargestProjectedBlocks = 0x1p40;
 
 TriangleSummary summarize(const ModalTriangle& t) {
   TriangleSummary s = scales_of(t);
+  const Eigen::Index r = t.modes[0].cols();
+  s.floor_underflow = std::sqrt((static_cast<double>(r) + 16.0) * std::numeric_limits<double>::min());
+  const double columns = static_cast<double>(padded_width(r));
+  s.projected_growth = 1.0 + (columns / kProjectionLanes + 16.0) * 0x1p-23;
+  s.projected_underflow = std::sqrt((columns + 16.0) * std::numeric_limits<float>::min());
   s.mean_modes = (t.modes[0] + t.modes[1] + t.modes[2]) / 3.0;
   for (int i = 0; i < 3; ++i) {
     s.deviation_grams[i].setZero();
@@ -478,7 +483,6 @@ TriangleSummary summarize(const ModalTriangle& t) {
 #endif
   }
   if (!(s.largest_block_norm < kLargestProjectedBlocks)) return s;
-  const Eigen::Index r = t.modes[0].cols();
   s.vertex_rows = Eigen::Matrix<float, 9, Eigen::Dynamic, Eigen::RowMajor>::Zero(9, padded_width(r));
   for (int i = 0; i < 3; ++i) s.vertex_rows.block(3 * i, 0, 3, r) = t.modes[i].cast<float>();
   return s;
@@ -524,9 +528,8 @@ void project_columns(const Eigen::Matrix<double, 3, Eigen::Dynamic>& block, Eige
 /// What the floors add to every rate they bound (see kFloorRateAllowance).
 double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSummary& summary_b,
                             const PositionRounding& rounding) {
-  const double modes = static_cast<double>(summary_a.mean_modes.cols());
   return kFloorRateAllowance * (summary_a.largest_block_norm + summary_b.largest_block_norm) + 2.0 * rounding.per_norm +
-         std::sqrt((modes + 16.0) * std::numeric_limits<double>::min());
+         summary_a.floor_underflow;
 }
 
 /// The floor (header) of each vertex pair's ratio, at 3 j + k, from the axis and gaps the 1D
@@ -534,8 +537,7 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
 /// in the 1D bound as computed); false when the floor abstains.
 [[gnu::always_inline]] inline bool vertex_pair_floors(const TriangleSummary& summary_a,
                                                       const TriangleSummary& summary_b, const Eigen::Vector3d& n,
-                                                      const std::array<double, 9>& gap,
-                                                      const PositionRounding& rounding, double cut,
+                                                      const std::array<double, 9>& gap, double allowance, double cut,
                                                       std::array<double, 9>& floor) {
   const double blocks = summary_a.largest_block_norm + summary_b.largest_block_norm;
   if (!(blocks < kLargestFloorBlocks)) return false;
@@ -545,7 +547,6 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
   const double common = (n[0] * (mean_b.row(0) - mean_a.row(0)) + n[1] * (mean_b.row(1) - mean_a.row(1)) +
                          n[2] * (mean_b.row(2) - mean_a.row(2)))
                             .norm();
-  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding);
   // The quick floor: every vertex pair's rate at most the largest spreads', its gap at least
   // the least gap.
   const double quick_rate =
@@ -602,9 +603,8 @@ double floor_rate_allowance(const TriangleSummary& summary_a, const TriangleSumm
 constexpr double kProjectedBlockAllowance = 1e-6;
 [[gnu::always_inline]] inline void leave_out_by_projection(const TriangleSummary& summary_a,
                                                            const TriangleSummary& summary_b, const Eigen::Vector3d& n,
-                                                           const std::array<double, 9>& gap,
-                                                           const PositionRounding& rounding, double cut,
-                                                           std::array<int, 9>& needed, int& count_needed,
+                                                           const std::array<double, 9>& gap, double floor_allowance,
+                                                           double cut, std::array<int, 9>& needed, int& count_needed,
                                                            double& least_floor) {
   const Eigen::Index width = summary_a.vertex_rows.cols();
   std::array<bool, 3> used_a, used_b;
@@ -612,7 +612,11 @@ constexpr double kProjectedBlockAllowance = 1e-6;
   // Copies: the compiler then knows no store below changes them.
   const float n0 = static_cast<float>(n[0]), n1 = static_cast<float>(n[1]), n2 = static_cast<float>(n[2]);
   alignas(32) float along[6][kColumnChunk];
-  alignas(32) float lanes[9][kProjectionLanes] = {};
+  // Only the rows read below are cleared (clearing all nine was a string store per call).
+  alignas(32) float lanes[9][kProjectionLanes];
+  for (int t = 0; t < count_needed; ++t) {
+    for (int l = 0; l < kProjectionLanes; ++l) lanes[t][l] = 0.0f;
+  }
   for (Eigen::Index first = 0; first < width; first += kColumnChunk) {
     const int count = static_cast<int>(std::min<Eigen::Index>(kColumnChunk, width - first));
     for (int v = 0; v < 6; ++v) {
@@ -633,11 +637,10 @@ constexpr double kProjectedBlockAllowance = 1e-6;
       }
     }
   }
-  const double columns = static_cast<double>(width);
-  const double growth = 1.0 + (columns / kProjectionLanes + 16.0) * 0x1p-23;
-  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding) +
+  const double growth = summary_a.projected_growth;
+  const double allowance = floor_allowance +
                            kProjectedBlockAllowance * (summary_a.largest_block_norm + summary_b.largest_block_norm) +
-                           std::sqrt((columns + 16.0) * std::numeric_limits<float>::min());
+                           summary_a.projected_underflow;
   int kept = 0;
   for (int t = 0; t < count_needed; ++t) {
     const int i = needed[t];
@@ -666,7 +669,8 @@ constexpr double kProjectedBlockAllowance = 1e-6;
 double floor_from_gaps(const TriangleSummary& summary_a, const TriangleSummary& summary_b, const Eigen::Vector3d& n,
                        const std::array<double, 9>& gap, const PositionRounding& rounding) {
   std::array<double, 9> floor;
-  if (!vertex_pair_floors(summary_a, summary_b, n, gap, rounding, INFINITY, floor)) return 0.0;
+  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding);
+  if (!vertex_pair_floors(summary_a, summary_b, n, gap, allowance, INFINITY, floor)) return 0.0;
   return *std::min_element(floor.begin(), floor.end());
 }
 
@@ -689,7 +693,8 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
   std::array<int, 9> needed;
   int count_needed = 0;
   double least_floor = INFINITY;  // of the vertex pairs left out
-  const bool floors = cut < INFINITY && vertex_pair_floors(summary_a, summary_b, n, gap, rounding, cut, floor);
+  const double allowance = floor_rate_allowance(summary_a, summary_b, rounding);
+  const bool floors = cut < INFINITY && vertex_pair_floors(summary_a, summary_b, n, gap, allowance, cut, floor);
   for (int i = 0; i < 9; ++i) {
     const bool left_out = floors && floor[i] >= cut;
     needed[count_needed] = i;
@@ -698,7 +703,7 @@ double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, co
   }
   if (count_needed == 0) return least_floor;
   if (floors && summary_a.vertex_rows.cols() == padded_width(r) && summary_b.vertex_rows.cols() == padded_width(r)) {
-    leave_out_by_projection(summary_a, summary_b, n, gap, rounding, cut, needed, count_needed, least_floor);
+    leave_out_by_projection(summary_a, summary_b, n, gap, allowance, cut, needed, count_needed, least_floor);
     if (count_needed == 0) return least_floor;
   }
   std::array<bool, 3> needed_a, needed_b;
@@ -749,6 +754,125 @@ double one_dimensional_radius_floor(const ModalTriangle& a, const ModalTriangle&
   std::array<double, 9> gap;
   if (!axis_and_gaps(a, b, rounding, n, gap)) return 0.0;
   return floor_from_gaps(summary_a, summary_b, n, gap, rounding);
+}
+
+namespace {
+
+// The group floor's margins. Relative: it bounds the quick floor of every pair of the two
+// groups, whose gaps, common rate and quotient round by a few hundred units of roundoff at
+// most (r + 10 for the sums over r columns: 2.3e-10 for r up to 10^6), and its own sums and
+// square roots as little. Absolute: the gaps and centroids round by about a hundred units of
+// roundoff of the largest coordinate, and the mean modes' differences by a few of the largest
+// blocks. Smaller could lift the floor above a pair's quick floor (a pair left out that its
+// own screening would keep: other certificates); larger only leaves out fewer groups.
+constexpr double kGroupRelative = 1e-6;
+constexpr double kGroupAbsolute = 1e-12;
+// Coordinates from this size on could overflow the pairs' sums: the group floor abstains.
+constexpr double kLargestGroupCoordinate = 1e150;
+
+}  // namespace
+
+/// At least ||x||_2 for a 3 x r matrix x (exactly, as given): Gershgorin's bound on the
+/// largest eigenvalue of x x^T, whose computed entries err by at most gamma_r times the
+/// product of the rows' norms (padded by 3 (r + 8) u trace), grown by the relative margin
+/// for the square root. Equal to ||x||_2 (within the margins) when the rows are orthogonal,
+/// as for the polynomial bases, whose vertex blocks are I (x) m(p)^T.
+/// x is y - z for two 3 x r blocks, its entries as computed; no allocation: the precomputation
+/// calls this for every node pair it visits.
+template <typename First, typename Second>
+double spectral_norm_upper(const First& y, const Second& z) {
+  constexpr double u = std::numeric_limits<double>::epsilon();
+  double g00 = 0.0, g11 = 0.0, g22 = 0.0, g01 = 0.0, g02 = 0.0, g12 = 0.0;
+  for (Eigen::Index c = 0; c < y.cols(); ++c) {
+    const double x0 = y(0, c) - z(0, c), x1 = y(1, c) - z(1, c), x2 = y(2, c) - z(2, c);
+    g00 += x0 * x0;
+    g11 += x1 * x1;
+    g22 += x2 * x2;
+    g01 += x0 * x1;
+    g02 += x0 * x2;
+    g12 += x1 * x2;
+  }
+  const double rows = std::max({g00 + std::fabs(g01) + std::fabs(g02), std::fabs(g01) + g11 + std::fabs(g12),
+                                std::fabs(g02) + std::fabs(g12) + g22});
+  const double pad = 3.0 * (static_cast<double>(y.cols()) + 8.0) * u * (g00 + g11 + g22);
+  return std::sqrt(rows + pad) * (1.0 + kGroupRelative);
+}
+
+TriangleGroupSummary summarize_group(const ModalTriangle* triangles, const TriangleSummary* summaries, int count,
+                                     const GroupReference& reference) {
+  TriangleGroupSummary g;
+  g.lowest_centroid.setConstant(INFINITY);
+  g.highest_centroid.setConstant(-INFINITY);
+  double reach = 0.0, deviation = 0.0;
+  for (int t = 0; t < count; ++t) {
+    const ModalTriangle& x = triangles[t];
+    const TriangleSummary& s = summaries[t];
+    const Eigen::Vector3d centroid = (x.rest[0] + x.rest[1] + x.rest[2]) / 3.0;
+    g.lowest_centroid = g.lowest_centroid.cwiseMin(centroid);
+    g.highest_centroid = g.highest_centroid.cwiseMax(centroid);
+    for (const Eigen::Vector3d& p : x.rest) reach = std::max(reach, (p - centroid).norm());
+    for (const auto& block : x.modes) deviation = std::max(deviation, spectral_norm_upper(block, reference));
+    g.largest_coordinate = std::max(g.largest_coordinate, s.largest_coordinate);
+    g.largest_row_norm = std::max(g.largest_row_norm, s.largest_row_norm);
+    g.largest_block_norm = std::max(g.largest_block_norm, s.largest_block_norm);
+  }
+  // The computed centroids and distances err by a few units of roundoff of the coordinates,
+  // the blocks' differences by one of the blocks and the reference: grown past the exact values.
+  const double centroid_rounding = kGroupAbsolute * g.largest_coordinate;
+  g.lowest_centroid.array() -= centroid_rounding;
+  g.highest_centroid.array() += centroid_rounding;
+  g.reach = reach * (1.0 + kGroupRelative) + centroid_rounding;
+  g.deviation = deviation * (1.0 + kGroupRelative) + kGroupAbsolute * (g.largest_block_norm + reference.norm());
+  return g;
+}
+
+// For triangles s of group A and t of group B, the 1D bound as computed (its pass over the
+// columns) is shrink min_jk (gap_jk / rate_jk). Gaps: with c the exact centroids and n the
+// computed unit axis (within 7u of the computed centroids' direction, whose sums err by at most
+// 32u L, L the largest coordinate), every computed gap n^T (X_t,k - X_s,j) less its slacks is at
+// least (1 - 10u) (|c_t - c_s| - (1 + 7u)(reach_s + reach_t)) - 100u L - 2 absolute (1 + 2u),
+// absolute = (r + 2) u L the positions' rounding: the centroids' direction less the vertices'
+// distances from them, and the roundings of the axis, the products and the slacks. The least
+// distance of the groups' centroid boxes bounds |c_t - c_s|, their reach the vertices'
+// distances. Rates: rate_jk is at most (1 + (r + 6)u)(N + 7.2u (block_s + block_t)) + 2
+// per_norm, N = ||n^T (U_t,k - U_s,j)|| exactly (the projected floor's argument), and N <= (1 +
+// 7u) (||R_B - R_A||_2 + dev_A + dev_B) for the groups' references R (triangle inequality). The
+// 2-norms come from Gershgorin's bound on Gram matrices (spectral_norm_upper), equal to them
+// for the polynomial bases. The margins (kGroupRelative, kGroupAbsolute) cover these roundings
+// many times over: the floor is at most every pair's 1D bound, which is then positive (every
+// gap positive). Blocks from kLargestFloorBlocks on could overflow its sums (to a bound of 0):
+// the floor abstains there, as for coordinates from kLargestGroupCoordinate on.
+double group_pair_floor(const TriangleGroupSummary& a, const TriangleGroupSummary& b, const GroupReference& reference_a,
+                        const GroupReference& reference_b) {
+  constexpr double u = std::numeric_limits<double>::epsilon();
+  const double blocks = a.largest_block_norm + b.largest_block_norm;
+  const double coordinate = std::max(a.largest_coordinate, b.largest_coordinate);
+  if (!(blocks < kLargestFloorBlocks) || !(coordinate < kLargestGroupCoordinate)) return 0.0;
+  double squared = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double apart =
+        std::max({0.0, b.lowest_centroid[i] - a.highest_centroid[i], a.lowest_centroid[i] - b.highest_centroid[i]});
+    squared += apart * apart;
+  }
+  const double modes = static_cast<double>(reference_a.cols());
+  const double position_rounding = (modes + 2.0) * u;
+#ifdef SSCC_MUTANT_GROUP_FLOOR_NO_REACH
+  const double gap = (1.0 - kGroupRelative) * std::sqrt(squared);
+#else
+  const double gap = (1.0 - kGroupRelative) * (std::sqrt(squared) - a.reach - b.reach) -
+                     (kGroupAbsolute + 2.0 * position_rounding * (1.0 + kGroupRelative)) * coordinate;
+#endif
+  if (!(gap > 0.0)) return 0.0;
+#ifdef SSCC_MUTANT_GROUP_FLOOR_NO_DEVIATION
+  const double deviations = 0.0;
+#else
+  const double deviations = a.deviation + b.deviation;
+#endif
+  const double motion = spectral_norm_upper(reference_b, reference_a) + deviations + kGroupAbsolute * blocks;
+  const double rate = (1.0 + kGroupRelative) * motion + 2.0 * position_rounding * (1.0 + kGroupRelative) *
+                                                            std::max(a.largest_row_norm, b.largest_row_norm);
+  const double floor = (1.0 - kGroupRelative) * (gap / rate);
+  return rate > 0.0 && std::isfinite(floor) ? floor : 0.0;
 }
 
 }  // namespace sscc

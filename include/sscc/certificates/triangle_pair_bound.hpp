@@ -101,6 +101,12 @@ struct TriangleSummary {
   /// k) and padded with zero columns to a multiple of eight: the projected floor reads n^T U_k
   /// as whole rows; empty where the blocks lie outside its range
   Eigen::Matrix<float, 9, Eigen::Dynamic, Eigen::RowMajor> vertex_rows;
+  /// What the floors add for underflow, sqrt((r + 16) DBL_MIN) and sqrt((w + 16) FLT_MIN) (w
+  /// the rows' padded width), and the projected floor's growth 1 + (w / 8 + 16) 2^-23: they
+  /// depend on r only, and a square root per screened pair was a few percent of its time
+  double floor_underflow = 0.0;
+  double projected_underflow = 0.0;
+  double projected_growth = 1.0;
 };
 TriangleSummary summarize(const ModalTriangle& t);
 
@@ -116,6 +122,33 @@ TriangleSummary summarize(const ModalTriangle& t);
 /// the floats' rounding.
 double one_dimensional_radius(const ModalTriangle& a, const ModalTriangle& b, const TriangleSummary& summary_a,
                               const TriangleSummary& summary_b, double cut = INFINITY);
+
+/// What the group floor reads of a group of triangles (a node of the hierarchy): bounds over
+/// the group's triangles, computed once per group.
+struct TriangleGroupSummary {
+  Eigen::Vector3d lowest_centroid = Eigen::Vector3d::Zero();   ///< a box holding every triangle's exact
+  Eigen::Vector3d highest_centroid = Eigen::Vector3d::Zero();  ///< centroid
+  double reach = 0.0;  ///< at least any vertex's distance from its triangle's exact centroid
+  double largest_coordinate = 0.0, largest_row_norm = 0.0, largest_block_norm = 0.0;
+  /// at least ||U_k - reference||_2 for every vertex block U_k of the group's triangles
+  double deviation = 0.0;
+};
+using GroupReference = Eigen::Ref<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>>;
+/// The group summary of `count` triangles and their summaries (summarize), against a 3 x r
+/// reference block (any: the closer to the vertices' blocks, the tighter the floor).
+TriangleGroupSummary summarize_group(const ModalTriangle* triangles, const TriangleSummary* summaries, int count,
+                                     const GroupReference& reference);
+
+/// Never above one_dimensional_radius(a, b) as computed for any triangle a of one group and b
+/// of the other, from bounds over each group: the least distance of their centroids less the
+/// largest distance of a vertex from its centroid (for the gaps), and the references'
+/// difference plus the vertex blocks' largest deviations from them (for the rates, in the
+/// 2-norm). 0 where it cannot tell (groups that overlap or nearly touch). A caller that
+/// screens pairs with one_dimensional_radius(a, b, summary_a, summary_b, cut) can leave out
+/// every pair of two groups whose floor reaches the cut: each screening would answer the cut
+/// or above, so the pairs bounded, and the radii, stay the same.
+double group_pair_floor(const TriangleGroupSummary& a, const TriangleGroupSummary& b, const GroupReference& reference_a,
+                        const GroupReference& reference_b);
 
 /// Never above one_dimensional_radius(a, b) as computed, at a fraction of its cost (one
 /// projection of a difference per mode against twelve dot products, and nine squares; the
