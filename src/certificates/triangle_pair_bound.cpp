@@ -767,18 +767,21 @@ namespace {
 // own screening would keep: other certificates); larger only leaves out fewer groups.
 constexpr double kGroupRelative = 1e-6;
 constexpr double kGroupAbsolute = 1e-12;
-// Coordinates from this size on could overflow the pairs' sums: the group floor abstains.
+// Coordinates from this size on could overflow the pairs' sums, and below the other the
+// squares of the vertices' distances from their centroids could underflow by more than the
+// absolute margin covers (2^-537 each, against 1e-12 L): the group floor abstains.
 constexpr double kLargestGroupCoordinate = 1e150;
+constexpr double kSmallestGroupCoordinate = 0x1p-400;
 
 }  // namespace
 
 /// At least ||x||_2 for a 3 x r matrix x (exactly, as given): Gershgorin's bound on the
 /// largest eigenvalue of x x^T, whose computed entries err by at most gamma_r times the
-/// product of the rows' norms (padded by 3 (r + 8) u trace), grown by the relative margin
-/// for the square root. Equal to ||x||_2 (within the margins) when the rows are orthogonal,
-/// as for the polynomial bases, whose vertex blocks are I (x) m(p)^T.
-/// x is y - z for two 3 x r blocks, its entries as computed; no allocation: the precomputation
-/// calls this for every node pair it visits.
+/// product of the rows' norms (padded by 3 (r + 8) u trace) and by 2^-1075 a product that
+/// underflows (padded by (r + 16) DBL_MIN), grown by the relative margin for the square root. Equal to ||x||_2 (within
+/// the margins) when the rows are orthogonal, as for the polynomial bases, whose vertex blocks are I (x) m(p)^T. x is y
+/// - z for two 3 x r blocks, its entries as computed; no allocation: the precomputation calls this for every node pair
+/// it visits.
 template <typename First, typename Second>
 double spectral_norm_upper(const First& y, const Second& z) {
   constexpr double u = std::numeric_limits<double>::epsilon();
@@ -794,7 +797,9 @@ double spectral_norm_upper(const First& y, const Second& z) {
   }
   const double rows = std::max({g00 + std::fabs(g01) + std::fabs(g02), std::fabs(g01) + g11 + std::fabs(g12),
                                 std::fabs(g02) + std::fabs(g12) + g22});
-  const double pad = 3.0 * (static_cast<double>(y.cols()) + 8.0) * u * (g00 + g11 + g22);
+  const double columns = static_cast<double>(y.cols());
+  const double pad =
+      3.0 * (columns + 8.0) * u * (g00 + g11 + g22) + (columns + 16.0) * std::numeric_limits<double>::min();
   return std::sqrt(rows + pad) * (1.0 + kGroupRelative);
 }
 
@@ -823,6 +828,7 @@ TriangleGroupSummary summarize_group(const ModalTriangle* triangles, const Trian
   g.highest_centroid.array() += centroid_rounding;
   g.reach = reach * (1.0 + kGroupRelative) + centroid_rounding;
   g.deviation = deviation * (1.0 + kGroupRelative) + kGroupAbsolute * (g.largest_block_norm + reference.norm());
+  g.rate_underflow = std::sqrt((static_cast<double>(reference.cols()) + 16.0) * std::numeric_limits<double>::min());
   return g;
 }
 
@@ -840,14 +846,20 @@ TriangleGroupSummary summarize_group(const ModalTriangle* triangles, const Trian
 // 2-norms come from Gershgorin's bound on Gram matrices (spectral_norm_upper), equal to them
 // for the polynomial bases. The margins (kGroupRelative, kGroupAbsolute) cover these roundings
 // many times over: the floor is at most every pair's 1D bound, which is then positive (every
-// gap positive). Blocks from kLargestFloorBlocks on could overflow its sums (to a bound of 0):
+// gap positive). Underflow: the 1D bound's squares that round up to 2^-1074 (r of them at most)
+// add up to sqrt(r 2^-1074) to its rates, covered by rate_underflow, sqrt((r + 16) DBL_MIN), the
+// Gram matrices' by their pad; on the gaps' side the floor abstains below
+// kSmallestGroupCoordinate. Blocks from kLargestFloorBlocks on could overflow its sums (to a bound of 0):
 // the floor abstains there, as for coordinates from kLargestGroupCoordinate on.
 double group_pair_floor(const TriangleGroupSummary& a, const TriangleGroupSummary& b, const GroupReference& reference_a,
                         const GroupReference& reference_b) {
   constexpr double u = std::numeric_limits<double>::epsilon();
   const double blocks = a.largest_block_norm + b.largest_block_norm;
   const double coordinate = std::max(a.largest_coordinate, b.largest_coordinate);
-  if (!(blocks < kLargestFloorBlocks) || !(coordinate < kLargestGroupCoordinate)) return 0.0;
+  if (!(blocks < kLargestFloorBlocks) || !(coordinate < kLargestGroupCoordinate) ||
+      !(coordinate >= kSmallestGroupCoordinate)) {
+    return 0.0;
+  }
   double squared = 0.0;
   for (int i = 0; i < 3; ++i) {
     const double apart =
@@ -869,8 +881,10 @@ double group_pair_floor(const TriangleGroupSummary& a, const TriangleGroupSummar
   const double deviations = a.deviation + b.deviation;
 #endif
   const double motion = spectral_norm_upper(reference_b, reference_a) + deviations + kGroupAbsolute * blocks;
-  const double rate = (1.0 + kGroupRelative) * motion + 2.0 * position_rounding * (1.0 + kGroupRelative) *
-                                                            std::max(a.largest_row_norm, b.largest_row_norm);
+  const double rate =
+      (1.0 + kGroupRelative) * motion +
+      2.0 * position_rounding * (1.0 + kGroupRelative) * std::max(a.largest_row_norm, b.largest_row_norm) +
+      a.rate_underflow;
   const double floor = (1.0 - kGroupRelative) * (gap / rate);
   return rate > 0.0 && std::isfinite(floor) ? floor : 0.0;
 }

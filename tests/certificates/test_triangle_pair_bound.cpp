@@ -361,14 +361,19 @@ TEST_CASE("group floor: never above the 1D bound of any pair of its two groups",
     // Groups of up to four triangles (the hierarchy's leaves) and of sixteen, from touching to
     // many of their sizes apart, some far from the origin, with modes near the ends of the
     // range where the floor abstains or its margins matter.
-    const double size = trial % 2 == 0 ? 0.05 : 0.2;
+    // Some groups of tiny coordinates, where the squares of the vertices' distances from their
+    // centroids underflow (the floor abstains below 2^-400).
+    const double units = trial % 17 == 3 ? 0x1p-537 : trial % 17 == 8 ? 0x1p-390 : 1.0;
+    const double size = (trial % 2 == 0 ? 0.05 : 0.2) * units;
     const int count = trial % 5 == 1 ? 16 : 1 + trial % 4;
     const Eigen::Vector3d origin = trial % 5 == 0 ? m.point(1e6) : Eigen::Vector3d::Zero();
     const Eigen::Vector3d offset = m.point(size * (0.5 + 2.0 * (trial % 13)));
     const bool smooth = trial % 4 != 0;
     const double noise = trial % 7 == 0 ? 0.0 : 0.01;
-    const double extreme[] = {1.0, 1.0, 1.0, 1e-150, 1e100, 1e-41};
-    const double mode_scale = extreme[trial % 6];
+    // And modes whose squares underflow (0x1p-537: near 2^-1074), where only the floor's
+    // underflow terms keep it below the 1D bound.
+    const double extreme[] = {1.0, 1.0, 1.0, 1e-150, 1e100, 1e-41, 0x1p-537, 1e-170};
+    const double mode_scale = extreme[trial % 8];
     std::array<std::vector<ModalTriangle>, 2> triangles;
     std::array<std::vector<sscc::TriangleSummary>, 2> summaries;
     std::array<Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>, 2> reference;
@@ -411,6 +416,50 @@ TEST_CASE("group floor: never above the 1D bound of any pair of its two groups",
       if (offset.norm() < 4.0 * size) ++near_positive;
       if (floor >= 0.25 * least) ++informative;
     }
+  }
+  // Two single-triangle groups the review of the floor built: (a) coordinates near 2^-537,
+  // where the squares of the vertices' distances from their centroids round to 0 and the
+  // centroids' distance rounds up, while the triangles overlap along the axis (1D bound 0); (b)
+  // one block's squares on the edge of rounding up to 2^-1074 in the 1D bound's sums, down to
+  // 0 in the floor's Gram matrix.
+  {
+    const double h = 0x1p-537;
+    ModalTriangle s, t;
+    s.rest = {Eigen::Vector3d(0.7 * h, 0, 0), Eigen::Vector3d(-0.35 * h, 0.6 * h, 0),
+              Eigen::Vector3d(-0.35 * h, -0.6 * h, 0)};
+    t.rest = {Eigen::Vector3d(0.5 * h, 0, 0.3 * h), Eigen::Vector3d(1.55 * h, 0.6 * h, -0.15 * h),
+              Eigen::Vector3d(1.55 * h, -0.6 * h, -0.15 * h)};
+    for (int i = 0; i < 3; ++i) {
+      s.modes[i] = Eigen::Matrix<double, 3, 2>::Zero();
+      t.modes[i] = Eigen::Matrix<double, 3, 2>::Identity();
+    }
+    const sscc::TriangleSummary ss = sscc::summarize(s), st = sscc::summarize(t);
+    const Eigen::Matrix<double, 3, 2, Eigen::RowMajor> rs = Eigen::Matrix<double, 3, 2>::Zero(),
+                                                       rt = Eigen::Matrix<double, 3, 2>::Identity();
+    const double floor =
+        sscc::group_pair_floor(sscc::summarize_group(&s, &ss, 1, rs), sscc::summarize_group(&t, &st, 1, rt), rs, rt);
+    CHECK(floor <= sscc::one_dimensional_radius(s, t));
+  }
+  {
+    constexpr double u = std::numeric_limits<double>::epsilon();
+    const double w = std::sqrt(2.0) * 0x1p-538 * (1.0 - 2.5 * u), v = 0x1p-537;
+    ModalTriangle s, t;
+    s.rest = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-0.5, 0.5, 0), Eigen::Vector3d(-0.5, -0.5, 0)};
+    t.rest = {Eigen::Vector3d(4, 0, 0), Eigen::Vector3d(6, 0, 0.5), Eigen::Vector3d(6, 0, -0.5)};
+    Eigen::Matrix<double, 3, 2> block = Eigen::Matrix<double, 3, 2>::Zero();
+    block(0, 0) = w;
+    block(0, 1) = v;
+    for (int i = 0; i < 3; ++i) {
+      s.modes[i] = Eigen::Matrix<double, 3, 2>::Zero();
+      t.modes[i] = block;
+    }
+    const sscc::TriangleSummary ss = sscc::summarize(s), st = sscc::summarize(t);
+    const Eigen::Matrix<double, 3, 2, Eigen::RowMajor> rs = Eigen::Matrix<double, 3, 2>::Zero(), rt = block;
+    const double floor =
+        sscc::group_pair_floor(sscc::summarize_group(&s, &ss, 1, rs), sscc::summarize_group(&t, &st, 1, rt), rs, rt);
+    INFO("floor " << floor << " 1D " << sscc::one_dimensional_radius(s, t));
+    CHECK(floor > 0.0);
+    CHECK(floor <= sscc::one_dimensional_radius(s, t));
   }
   // Not vacuous: the floor is positive for most groups apart, near ones included, and is mostly
   // within a factor of four of their least 1D bound.

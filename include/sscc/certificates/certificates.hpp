@@ -109,7 +109,7 @@ std::string basis_scale_problem(const SubspaceModel& model);
 
 struct PrecomputeStats {
   long node_pairs_visited = 0;
-  long node_pairs_culled = 0;       ///< by the box-box bound
+  long node_pairs_culled = 0;       ///< by the box-box bound or the group floor
   long triangle_pairs_culled = 0;   ///< by the 1D bound
   long triangle_pairs_bounded = 0;  ///< triangle_pair_radius calls
   long constant_mode_evaluations = 0;

@@ -132,6 +132,7 @@ struct TriangleGroupSummary {
   double largest_coordinate = 0.0, largest_row_norm = 0.0, largest_block_norm = 0.0;
   /// at least ||U_k - reference||_2 for every vertex block U_k of the group's triangles
   double deviation = 0.0;
+  double rate_underflow = 0.0;  ///< sqrt((r + 16) DBL_MIN): the 1D bound's squares that underflow
 };
 using GroupReference = Eigen::Ref<const Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>>;
 /// The group summary of `count` triangles and their summaries (summarize), against a 3 x r
@@ -143,7 +144,8 @@ TriangleGroupSummary summarize_group(const ModalTriangle* triangles, const Trian
 /// of the other, from bounds over each group: the least distance of their centroids less the
 /// largest distance of a vertex from its centroid (for the gaps), and the references'
 /// difference plus the vertex blocks' largest deviations from them (for the rates, in the
-/// 2-norm). 0 where it cannot tell (groups that overlap or nearly touch). A caller that
+/// 2-norm). 0 where it cannot tell (groups that overlap or nearly touch, coordinates of 1e150
+/// or more, or all below 2^-400). A caller that
 /// screens pairs with one_dimensional_radius(a, b, summary_a, summary_b, cut) can leave out
 /// every pair of two groups whose floor reaches the cut: each screening would answer the cut
 /// or above, so the pairs bounded, and the radii, stay the same.
